@@ -1,0 +1,173 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "angle_dpoly_bending.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+AngleDPolyBending::AngleDPolyBending(LAMMPS *lmp) :
+    Angle(lmp), stiffness(nullptr), mean_interior_angle(MathConst::MY_PI)
+{
+  born_matrix_enable = 0;
+}
+
+AngleDPolyBending::~AngleDPolyBending()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(stiffness);
+  }
+}
+
+void AngleDPolyBending::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nangletypes + 1;
+  memory->create(stiffness, np1, "angle:stiffness");
+  memory->create(setflag, np1, "angle:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+}
+
+void AngleDPolyBending::init_style()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, "Angle style dpoly/bending needs a 2d simulation (dimension 2)");
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
+  double local[2] = {0.0, (double) atom->nlocal}, global[2];
+  for (int i = 0; i < atom->nlocal; i++) local[0] += state.preferred_angle[i];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (global[1] > 0.0) mean_interior_angle = MathConst::MY_PI - global[0] / global[1];
+}
+
+/* ----------------------------------------------------------------------
+   theta = atan2(d1 x d2, d1 . d2) with d1 = x2 - x1, d2 = x3 - x2, so
+   dtheta/dd1 = (d1y, -d1x)/|d1|^2 and dtheta/dd2 = (-d2y, d2x)/|d2|^2
+------------------------------------------------------------------------- */
+
+void AngleDPolyBending::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
+  double **x = atom->x;
+  double **f = atom->f;
+  int **anglelist = neighbor->anglelist;
+  const int nanglelist = neighbor->nanglelist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  double eangle = 0.0;
+
+  for (int n = 0; n < nanglelist; n++) {
+    const int i1 = anglelist[n][0];
+    const int i2 = anglelist[n][1];
+    const int i3 = anglelist[n][2];
+    const int type = anglelist[n][3];
+
+    const double d1[2] = {x[i2][0] - x[i1][0], x[i2][1] - x[i1][1]};
+    const double d2[2] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1]};
+    const double rsq1 = d1[0] * d1[0] + d1[1] * d1[1];
+    const double rsq2 = d2[0] * d2[0] + d2[1] * d2[1];
+    if (rsq1 == 0.0 || rsq2 == 0.0)
+      error->one(FLERR, "Angle style dpoly/bending: vertex {} coincides with a ring neighbour",
+                 atom->tag[i2]);
+
+    const double dtheta = DPoly::turning_angle(d1, d2) - state.preferred_angle[i2];
+    const double torque = stiffness[type] * dtheta;
+    if (eflag) eangle = 0.5 * torque * dtheta;
+
+    double f1[3] = {torque * d1[1] / rsq1, -torque * d1[0] / rsq1, 0.0};
+    double f3[3] = {torque * d2[1] / rsq2, -torque * d2[0] / rsq2, 0.0};
+
+    if (newton_bond || i1 < nlocal) {
+      f[i1][0] += f1[0];
+      f[i1][1] += f1[1];
+    }
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= f1[0] + f3[0];
+      f[i2][1] -= f1[1] + f3[1];
+    }
+    if (newton_bond || i3 < nlocal) {
+      f[i3][0] += f3[0];
+      f[i3][1] += f3[1];
+    }
+    if (evflag)
+      ev_tally(i1, i2, i3, nlocal, newton_bond, eangle, f1, f3, -d1[0], -d1[1], 0.0, d2[0], d2[1],
+               0.0);
+  }
+}
+
+void AngleDPolyBending::coeff(int narg, char **arg)
+{
+  if (narg != 2)
+    error->all(FLERR, "Angle style dpoly/bending takes one coefficient (eps_b), got {}", narg - 1);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
+  const double eps_b = utils::numeric(FLERR, arg[1], false, lmp);
+  if (eps_b < 0.0) error->all(FLERR, "Angle style dpoly/bending eps_b must be >= 0, got {}", arg[1]);
+
+  for (int i = ilo; i <= ihi; i++) {
+    stiffness[i] = eps_b;
+    setflag[i] = 1;
+  }
+}
+
+// theta0 is per vertex, not per type: report the mean interior angle pi - <theta0>
+double AngleDPolyBending::equilibrium_angle(int /*type*/)
+{
+  return mean_interior_angle;
+}
+
+void AngleDPolyBending::write_restart(FILE *fp)
+{
+  fwrite(&stiffness[1], sizeof(double), atom->nangletypes, fp);
+}
+
+void AngleDPolyBending::read_restart(FILE *fp)
+{
+  allocate();
+  if (comm->me == 0)
+    utils::sfread(FLERR, &stiffness[1], sizeof(double), atom->nangletypes, fp, nullptr, error);
+  MPI_Bcast(&stiffness[1], atom->nangletypes, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= atom->nangletypes; i++) setflag[i] = 1;
+}
+
+void AngleDPolyBending::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nangletypes; i++) fprintf(fp, "%d %.15g\n", i, stiffness[i]);
+}
+
+double AngleDPolyBending::single(int type, int i1, int i2, int i3)
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
+  double **x = atom->x;
+  i1 = domain->closest_image(i2, i1);
+  i3 = domain->closest_image(i2, i3);
+  const double d1[2] = {x[i2][0] - x[i1][0], x[i2][1] - x[i1][1]};
+  const double d2[2] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1]};
+  const double dtheta = DPoly::turning_angle(d1, d2) - state.preferred_angle[i2];
+  return 0.5 * stiffness[type] * dtheta * dtheta;
+}
+
+void *AngleDPolyBending::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "eps_b") == 0) return (void *) stiffness;
+  return nullptr;
+}

@@ -1,0 +1,44 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef ANGLE_CLASS
+// clang-format off
+AngleStyle(dpoly/bending,AngleDPolyBending);
+// clang-format on
+#else
+
+#ifndef LMP_ANGLE_DPOLY_BENDING_H
+#define LMP_ANGLE_DPOLY_BENDING_H
+
+#include "angle.h"
+
+namespace LAMMPS_NS {
+
+// Bending term of a deformable polygon: U = (eps_b/2)(theta - theta0)^2 per vertex, with theta
+// the signed turning angle at the angle's middle atom and theta0 that vertex's preferred value.
+class AngleDPolyBending : public Angle {
+ public:
+  AngleDPolyBending(class LAMMPS *);
+  ~AngleDPolyBending() override;
+  void init_style() override;
+  void compute(int, int) override;
+  void coeff(int, char **) override;
+  double equilibrium_angle(int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, int, int, int) override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  double *stiffness;              // eps_b per angle type
+  double mean_interior_angle;     // pi - <theta0> when the run started, for equilibrium_angle()
+  void allocate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,181 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "bond_dpoly_segment.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+BondDPolySegment::BondDPolySegment(LAMMPS *lmp) :
+    Bond(lmp), stiffness(nullptr), longest_preferred(0.0)
+{
+  born_matrix_enable = 0;
+}
+
+BondDPolySegment::~BondDPolySegment()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(stiffness);
+  }
+}
+
+void BondDPolySegment::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(stiffness, np1, "bond:stiffness");
+  memory->create(setflag, np1, "bond:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+}
+
+void BondDPolySegment::init_style()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, "Bond style dpoly/segment needs a 2d simulation (dimension 2)");
+  if (!atom->avec->angles_allow)
+    error->all(FLERR, "Bond style dpoly/segment needs angles: they give each ring its order");
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
+  double longest = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) longest = std::max(longest, state.preferred_length[i]);
+  MPI_Allreduce(&longest, &longest_preferred, 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+double BondDPolySegment::preferred_length(const DPoly::VertexState &state, int i, int j)
+{
+  const double l0 = DPoly::segment_preferred_length(atom, state, i, j);
+  if (l0 >= 0.0) return l0;
+  const int owned = (i < atom->nlocal) ? i : j;
+  const int centred = DPoly::ring_links(atom, owned).count;
+  if (centred != 1)
+    error->one(FLERR, "Bond style dpoly/segment: vertex {} is the centre of {} angles; a ring "
+                      "vertex needs exactly one angle (prev, vertex, next)", atom->tag[owned], centred);
+  error->one(FLERR, "Bond style dpoly/segment: bond {}-{} is not a segment of a ring: its atoms "
+                      "must be consecutive vertices (prev, vertex, next) of the angle centred on "
+                      "one of them", atom->tag[i], atom->tag[j]);
+  return -1.0;
+}
+
+/* ----------------------------------------------------------------------
+   U = (eps_l/2)(r/l0 - 1)^2, so F = -dU/dr = -eps_l (r/l0 - 1)/l0 along the bond
+------------------------------------------------------------------------- */
+
+void BondDPolySegment::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
+  double **x = atom->x;
+  double **f = atom->f;
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  double ebond = 0.0;
+
+  for (int n = 0; n < nbondlist; n++) {
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    const int type = bondlist[n][2];
+
+    const double l0 = preferred_length(state, i1, i2);
+    const double delx = x[i1][0] - x[i2][0];
+    const double dely = x[i1][1] - x[i2][1];
+    const double delz = x[i1][2] - x[i2][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double r = sqrt(rsq);
+    if (r == 0.0)
+      error->one(FLERR, "Bond style dpoly/segment: vertices {} and {} coincide", atom->tag[i1],
+                 atom->tag[i2]);
+
+    const double strain = r / l0 - 1.0;
+    const double fbond = -stiffness[type] * strain / (l0 * r);
+    if (eflag) ebond = 0.5 * stiffness[type] * strain * strain;
+
+    if (newton_bond || i1 < nlocal) {
+      f[i1][0] += delx * fbond;
+      f[i1][1] += dely * fbond;
+      f[i1][2] += delz * fbond;
+    }
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= delx * fbond;
+      f[i2][1] -= dely * fbond;
+      f[i2][2] -= delz * fbond;
+    }
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+  }
+}
+
+void BondDPolySegment::coeff(int narg, char **arg)
+{
+  if (narg != 2)
+    error->all(FLERR, "Bond style dpoly/segment takes one coefficient (eps_l), got {}", narg - 1);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+  const double eps_l = utils::numeric(FLERR, arg[1], false, lmp);
+  if (eps_l < 0.0) error->all(FLERR, "Bond style dpoly/segment eps_l must be >= 0, got {}", arg[1]);
+
+  for (int i = ilo; i <= ihi; i++) {
+    stiffness[i] = eps_l;
+    setflag[i] = 1;
+  }
+}
+
+// l0 is per vertex, not per type: report the largest, as a bound for neighbor and comm checks
+double BondDPolySegment::equilibrium_distance(int /*type*/)
+{
+  return longest_preferred;
+}
+
+void BondDPolySegment::write_restart(FILE *fp)
+{
+  fwrite(&stiffness[1], sizeof(double), atom->nbondtypes, fp);
+}
+
+void BondDPolySegment::read_restart(FILE *fp)
+{
+  allocate();
+  if (comm->me == 0)
+    utils::sfread(FLERR, &stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr, error);
+  MPI_Bcast(&stiffness[1], atom->nbondtypes, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= atom->nbondtypes; i++) setflag[i] = 1;
+}
+
+void BondDPolySegment::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++) fprintf(fp, "%d %.15g\n", i, stiffness[i]);
+}
+
+double BondDPolySegment::single(int type, double rsq, int i, int j, double &fforce)
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
+  const double l0 = preferred_length(state, i, j);
+  const double r = sqrt(rsq);
+  const double strain = r / l0 - 1.0;
+  fforce = (r > 0.0) ? -stiffness[type] * strain / (l0 * r) : 0.0;
+  return 0.5 * stiffness[type] * strain * strain;
+}
+
+void *BondDPolySegment::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "eps_l") == 0) return (void *) stiffness;
+  return nullptr;
+}

@@ -1,0 +1,59 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "dpoly_ring.h"
+
+#include "atom.h"
+#include "error.h"
+
+#include <utility>
+
+using namespace LAMMPS_NS;
+
+const char *const DPoly::PROPERTY_HINT =
+    "fix ID all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes";
+
+DPoly::RingLinks DPoly::ring_links(const Atom *atom, int i)
+{
+  RingLinks links;
+  const tagint self = atom->tag[i];
+  for (int m = 0; m < atom->num_angle[i]; m++) {
+    if (atom->angle_atom2[i][m] != self) continue;
+    links.prev = atom->angle_atom1[i][m];
+    links.next = atom->angle_atom3[i][m];
+    links.count++;
+  }
+  return links;
+}
+
+static double *find_property(Atom *atom, Error *error, const char *style, const char *name)
+{
+  int flag, cols, ghost;
+  const int index = atom->find_custom_ghost(name, flag, cols, ghost);
+  if (index < 0 || flag != 1 || cols != 0)
+    error->all(FLERR, "{} needs the per-atom property d_{}: define the vertex state with: {}",
+               style, name, DPoly::PROPERTY_HINT);
+  if (!ghost)
+    error->all(FLERR, "{} needs d_{} on ghost atoms too: add 'ghost yes' to its fix property/atom",
+               style, name);
+  return atom->dvector[index];
+}
+
+DPoly::VertexState DPoly::vertex_state(Atom *atom, Error *error, const char *style)
+{
+  return {find_property(atom, error, style, "sigma"), find_property(atom, error, style, "l0"),
+          find_property(atom, error, style, "theta0"), find_property(atom, error, style, "a0")};
+}
+
+double DPoly::segment_preferred_length(const Atom *atom, const VertexState &state, int i, int j)
+{
+  // the angle arrays are complete only for owned atoms; look from whichever end is owned
+  if (i >= atom->nlocal) std::swap(i, j);
+  const RingLinks links = ring_links(atom, i);
+  if (links.count != 1) return -1.0;
+  if (links.next == atom->tag[j]) return state.preferred_length[i];
+  if (links.prev == atom->tag[j]) return state.preferred_length[j];
+  return -1.0;
+}

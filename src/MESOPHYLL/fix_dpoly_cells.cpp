@@ -1,0 +1,374 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "fix_dpoly_cells.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "group.h"
+#include "modify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+// What one rank tells the others about each of its vertices when the rings are checked.
+struct VertexRecord {
+  tagint tag, molecule, prev, next;
+  int centred_angles;
+  double diameter, preferred_length, preferred_area;
+};
+}    // namespace
+
+FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), area_stiffness(1.0), area_energy(0.0)
+{
+  int iarg = 3;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "eps_a") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix dpoly/cells eps_a", error);
+      area_stiffness = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (area_stiffness < 0.0)
+        error->all(FLERR, "Fix dpoly/cells eps_a must be >= 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Unknown fix dpoly/cells keyword: {}", arg[iarg]);
+  }
+
+  scalar_flag = 1;    // area energy
+  extscalar = 1;
+  vector_flag = 1;    // number of cells, total cell area, cells with area <= 0
+  size_vector = 3;
+  extvector = 0;
+  global_freq = 1;
+  energy_global_flag = 1;
+  virial_global_flag = virial_peratom_flag = 1;
+  // The area term is part of the potential: the minimizer's objective and the pressure that
+  // fix box/relax drives must both see it, so both are on by default (init() insists).
+  thermo_energy = thermo_virial = 1;
+  comm_forward = 3;
+  dynamic_group_allow = 0;
+}
+
+int FixDPolyCells::setmask()
+{
+  return POST_FORCE | MIN_POST_FORCE;
+}
+
+void FixDPolyCells::init()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, "Fix dpoly/cells needs a 2d simulation (dimension 2), got dimension {}",
+               domain->dimension);
+  if (!atom->molecule_flag)
+    error->all(FLERR, "Fix dpoly/cells needs molecule IDs (e.g. atom_style molecular): "
+                      "each cell is a molecule");
+  if (!atom->avec->angles_allow)
+    error->all(FLERR, "Fix dpoly/cells needs angles: each vertex is the centre of one angle "
+                      "(prev, vertex, next) that gives the ring order");
+  DPoly::vertex_state(atom, error, "Fix dpoly/cells");
+  if (modify->get_fix_by_style("^dpoly/cells$").size() > 1)
+    error->all(FLERR, "Only one fix dpoly/cells may be defined");
+  if (!thermo_energy || !thermo_virial)
+    error->all(FLERR, "Fix dpoly/cells {}: the area term must count in both energy and virial; "
+                      "do not use fix_modify energy no or virial no with it", id);
+}
+
+void FixDPolyCells::setup(int vflag)
+{
+  refresh_cells();
+  post_force(vflag);
+}
+
+void FixDPolyCells::min_setup(int vflag)
+{
+  setup(vflag);
+}
+
+void FixDPolyCells::min_post_force(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixDPolyCells::post_force(int vflag)
+{
+  measure_cells();
+  apply_area_forces(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   collective: gather every vertex's ring links and state, check that each cell is one closed
+   ring with valid values, index the cells, then check the image flags and orientation
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::refresh_cells()
+{
+  gather_rings();
+  check_ring_images();
+  measure_cells();
+  for (int c = 0; c < ncells(); c++)
+    if (areas[c] <= 0.0)
+      error->all(FLERR, "Fix dpoly/cells: cell {} has area {:.8g} <= 0; a ring must run "
+                        "counter-clockwise and must not be inverted", cell_ids[c], areas[c]);
+}
+
+void FixDPolyCells::gather_rings()
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/cells");
+  std::vector<VertexRecord> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const DPoly::RingLinks links = DPoly::ring_links(atom, i);
+    mine.push_back({atom->tag[i], atom->molecule[i], links.prev, links.next, links.count,
+                    state.diameter[i], state.preferred_length[i], state.preferred_area[i]});
+  }
+
+  // the whole ring table on every rank, so every rank reaches the same verdict
+  const int nbytes = (int) (mine.size() * sizeof(VertexRecord));
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<VertexRecord> all((displs.back() + counts.back()) / sizeof(VertexRecord));
+  MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE,
+                 world);
+  if (all.empty()) error->all(FLERR, "Fix dpoly/cells: group {} holds no vertices", group->names[igroup]);
+
+  std::unordered_map<tagint, const VertexRecord *> by_tag;
+  for (const auto &v : all) {
+    if (v.centred_angles != 1)
+      error->all(FLERR, "Fix dpoly/cells: vertex {} is the centre of {} angles; a ring vertex "
+                        "needs exactly one angle (prev, vertex, next)", v.tag, v.centred_angles);
+    if (v.molecule <= 0)
+      error->all(FLERR, "Fix dpoly/cells: vertex {} has molecule ID {}; each cell must be a "
+                        "molecule with ID > 0", v.tag, v.molecule);
+    if (!(v.diameter > 0.0))
+      error->all(FLERR, "Fix dpoly/cells: vertex {} has sigma = {}; it must be > 0", v.tag, v.diameter);
+    if (!(v.preferred_length > 0.0))
+      error->all(FLERR, "Fix dpoly/cells: vertex {} has l0 = {}; it must be > 0", v.tag,
+                 v.preferred_length);
+    if (!(v.preferred_area > 0.0))
+      error->all(FLERR, "Fix dpoly/cells: vertex {} has a0 = {}; it must be > 0", v.tag,
+                 v.preferred_area);
+    by_tag[v.tag] = &v;
+  }
+
+  std::unordered_map<tagint, std::vector<const VertexRecord *>> members;
+  for (const auto &v : all) {
+    const auto next = by_tag.find(v.next);
+    if (next == by_tag.end() || next->second->molecule != v.molecule || next->second->prev != v.tag)
+      error->all(FLERR, "Fix dpoly/cells: vertex {} of cell {} points to vertex {} as its next, "
+                        "but that is not a vertex of the same ring pointing back to it",
+                 v.tag, v.molecule, v.next);
+    members[v.molecule].push_back(&v);
+  }
+
+  cell_ids.clear();
+  for (const auto &m : members) cell_ids.push_back(m.first);
+  std::sort(cell_ids.begin(), cell_ids.end());
+  const int n = ncells();
+  vertex_counts.assign(n, 0);
+  preferred_areas.assign(n, 0.0);
+
+  for (int c = 0; c < n; c++) {
+    const auto &ring = members[cell_ids[c]];
+    const int count = (int) ring.size();
+    if (count < 3)
+      error->all(FLERR, "Fix dpoly/cells: cell {} has {} vertices; a ring needs at least 3",
+                 cell_ids[c], count);
+    const VertexRecord *start = ring.front();
+    int steps = 0;
+    const VertexRecord *v = start;
+    do {
+      if (v->preferred_area != start->preferred_area)
+        error->all(FLERR, "Fix dpoly/cells: cell {} has different a0 on vertices {} ({}) and {} ({})",
+                   cell_ids[c], start->tag, start->preferred_area, v->tag, v->preferred_area);
+      v = by_tag[v->next];
+      steps++;
+    } while (v != start && steps <= count);
+    if (steps != count)
+      error->all(FLERR, "Fix dpoly/cells: cell {} is not one closed ring: following the ring "
+                        "from vertex {} returns after {} of its {} vertices", cell_ids[c],
+                 start->tag, steps, count);
+    vertex_counts[c] = count;
+    preferred_areas[c] = start->preferred_area;
+  }
+
+  // molecule ID -> cell: a plain table when the IDs are dense, as they usually are
+  dense_index.clear();
+  sparse_index.clear();
+  if (cell_ids.back() <= 4 * (tagint) n + 1024) {
+    dense_index.assign(cell_ids.back() + 1, -1);
+    for (int c = 0; c < n; c++) dense_index[cell_ids[c]] = c;
+  } else {
+    for (int c = 0; c < n; c++) sparse_index[cell_ids[c]] = c;
+  }
+  areas.assign(n, 0.0);
+  perimeters.assign(n, 0.0);
+  area_slopes.assign(n, 0.0);
+}
+
+int FixDPolyCells::cell_index(tagint molecule) const
+{
+  if (!dense_index.empty())
+    return (molecule >= 0 && molecule < (tagint) dense_index.size()) ? dense_index[molecule] : -1;
+  const auto found = sparse_index.find(molecule);
+  return found == sparse_index.end() ? -1 : found->second;
+}
+
+/* ----------------------------------------------------------------------
+   the area uses unwrapped positions, so each ring's image flags must keep it whole:
+   compare every vertex's unwrapped position with its ring neighbour's, sent by its owner
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::check_ring_images()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  double **x = atom->x;
+  unwrapped.assign(3 * (size_t) nall, 0.0);
+  for (int i = 0; i < nlocal; i++) domain->unmap(x[i], atom->image[i], &unwrapped[3 * i]);
+  comm->forward_comm(this);
+
+  const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd);
+  tagint broken = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const tagint next = DPoly::ring_links(atom, i).next;
+    const int j = domain->closest_image(i, atom->map(next));
+    if (j < 0) {
+      broken = std::max(broken, atom->tag[i]);
+      continue;
+    }
+    for (int d = 0; d < 2; d++)
+      if (fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) > tolerance)
+        broken = std::max(broken, atom->tag[i]);
+  }
+  tagint any_broken;
+  MPI_Allreduce(&broken, &any_broken, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (any_broken)
+    error->all(FLERR, "Fix dpoly/cells: the ring is not whole between vertex {} and its next "
+                      "vertex: give the ring consistent image flags, keep its segments shorter "
+                      "than half the box, and make sure the next vertex is within the "
+                      "communication cutoff", any_broken);
+}
+
+int FixDPolyCells::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) buf[m++] = unwrapped[3 * list[k] + d];
+  return m;
+}
+
+void FixDPolyCells::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) unwrapped[3 * i + d] = buf[m++];
+}
+
+/* ----------------------------------------------------------------------
+   collective: area (shoelace on unwrapped positions) and perimeter of every cell
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::measure_cells()
+{
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+  to_prev.assign(2 * (size_t) nlocal, 0.0);
+  to_next.assign(2 * (size_t) nlocal, 0.0);
+  std::vector<double> local(2 * ncells(), 0.0), global(2 * ncells(), 0.0);
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const DPoly::RingLinks links = DPoly::ring_links(atom, i);
+    const int jp = domain->closest_image(i, atom->map(links.prev));
+    const int jn = domain->closest_image(i, atom->map(links.next));
+    if (jp < 0 || jn < 0)
+      error->one(FLERR, "Fix dpoly/cells: a ring neighbour of vertex {} is missing on this rank; "
+                        "increase the communication cutoff (comm_modify cutoff)", atom->tag[i]);
+    const int c = cell_index(atom->molecule[i]);
+    if (c < 0)
+      error->one(FLERR, "Fix dpoly/cells: vertex {} belongs to molecule {}, which was not a cell "
+                        "when the run started", atom->tag[i], atom->molecule[i]);
+    double *dp = &to_prev[2 * i], *dn = &to_next[2 * i];
+    dp[0] = x[i][0] - x[jp][0];
+    dp[1] = x[i][1] - x[jp][1];
+    dn[0] = x[jn][0] - x[i][0];
+    dn[1] = x[jn][1] - x[i][1];
+    double xu[3];
+    domain->unmap(x[i], atom->image[i], xu);
+    local[2 * c] += 0.5 * (xu[0] * dn[1] - xu[1] * dn[0]);
+    local[2 * c + 1] += sqrt(dn[0] * dn[0] + dn[1] * dn[1]);
+  }
+  MPI_Allreduce(local.data(), global.data(), 2 * ncells(), MPI_DOUBLE, MPI_SUM, world);
+  for (int c = 0; c < ncells(); c++) {
+    areas[c] = global[2 * c];
+    perimeters[c] = global[2 * c + 1];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   U = (eps_a/2)(a/a0 - 1)^2 per cell. With D = x_next - x_prev, da/dx_i = (D_y, -D_x)/2.
+   Under a deformation of the box a scales with its determinant, so the cell's virial is
+   -a dU/da on the diagonal (shared equally among its vertices for the per-atom virial).
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::apply_area_forces(int vflag)
+{
+  v_init(vflag);
+  area_energy = 0.0;
+  for (int c = 0; c < ncells(); c++) {
+    const double strain = areas[c] / preferred_areas[c] - 1.0;
+    area_energy += 0.5 * area_stiffness * strain * strain;
+    area_slopes[c] = area_stiffness * strain / preferred_areas[c];
+  }
+
+  double **f = atom->f;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int c = cell_index(atom->molecule[i]);
+    const double slope = area_slopes[c];
+    const double dx = to_prev[2 * i] + to_next[2 * i];
+    const double dy = to_prev[2 * i + 1] + to_next[2 * i + 1];
+    f[i][0] -= 0.5 * slope * dy;
+    f[i][1] += 0.5 * slope * dx;
+    if (evflag) {
+      const double w = -areas[c] * slope / vertex_counts[c];
+      double v[6] = {w, w, 0.0, 0.0, 0.0, 0.0};
+      v_tally(i, v);
+    }
+  }
+}
+
+double FixDPolyCells::compute_scalar()
+{
+  return area_energy;
+}
+
+double FixDPolyCells::compute_vector(int n)
+{
+  if (n == 0) return ncells();
+  if (n == 1) {
+    double total = 0.0;
+    for (double a : areas) total += a;
+    return total;
+  }
+  return (double) std::count_if(areas.begin(), areas.end(), [](double a) { return a <= 0.0; });
+}
+
+double FixDPolyCells::memory_usage()
+{
+  return sizeof(double) * (to_prev.capacity() + to_next.capacity() + unwrapped.capacity()) +
+      (sizeof(double) * 4 + sizeof(int) * 2 + sizeof(tagint)) * cell_ids.capacity();
+}

@@ -1,0 +1,77 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(dpoly/cells,FixDPolyCells);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_DPOLY_CELLS_H
+#define LMP_FIX_DPOLY_CELLS_H
+
+#include "fix.h"
+
+#include <unordered_map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
+// counter-clockwise ring), checks them, and adds the per-cell area term
+//   U_area = (eps_a/2) (a/a0 - 1)^2
+// to forces, energy and virial. Companion styles find it with modify->get_fix_by_style().
+class FixDPolyCells : public Fix {
+ public:
+  FixDPolyCells(class LAMMPS *, int, char **);
+
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void post_force(int) override;
+  void min_post_force(int) override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
+
+  // Per-cell values, identical on every rank, current after the last force evaluation.
+  int ncells() const { return (int) cell_ids.size(); }
+  tagint cell_id(int cell) const { return cell_ids[cell]; }
+  int cell_index(tagint molecule) const;    // -1 if the molecule is not a cell
+  double area(int cell) const { return areas[cell]; }
+  double perimeter(int cell) const { return perimeters[cell]; }
+  double preferred_area(int cell) const { return preferred_areas[cell]; }
+  int vertex_count(int cell) const { return vertex_counts[cell]; }
+
+  // Re-read cells, ring order and preferred areas (collective): call after changing them.
+  void refresh_cells();
+
+ private:
+  double area_stiffness;    // eps_a
+  double area_energy;
+
+  std::vector<tagint> cell_ids;    // sorted molecule IDs of the cells
+  std::vector<int> dense_index;    // molecule ID -> cell, when IDs are dense
+  std::unordered_map<tagint, int> sparse_index;    // otherwise
+  std::vector<int> vertex_counts;
+  std::vector<double> preferred_areas, areas, perimeters, area_slopes;    // area_slope = dU/da
+
+  // per owned vertex, minimum-image vectors to the previous and next ring vertex
+  std::vector<double> to_prev, to_next;
+  std::vector<double> unwrapped;    // forward-communicated positions, for the image check
+
+  void gather_rings();
+  void check_ring_images();
+  void measure_cells();
+  void apply_area_forces(int vflag);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,85 @@
+// A LAMMPS instance driven through the library interface, for the MESOPHYLL tests.
+#ifndef MESOPHYLL_TESTS_LAMMPS_SESSION_H
+#define MESOPHYLL_TESTS_LAMMPS_SESSION_H
+
+#include "mpi.h"
+
+#define LAMMPS_LIB_MPI 1    // lammps_open() with a communicator
+#include "library.h"
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+class LammpsSession {
+ public:
+  explicit LammpsSession(MPI_Comm comm = MPI_COMM_WORLD)
+  {
+    const char *args[] = {"mesophyll-test", "-log", "none", "-echo", "none", "-screen", "none",
+                          "-nocite"};
+    handle = lammps_open(8, const_cast<char **>(args), comm, nullptr);
+    if (!handle) throw std::runtime_error("could not create a LAMMPS instance");
+  }
+  ~LammpsSession() { lammps_close(handle); }
+  LammpsSession(const LammpsSession &) = delete;
+  LammpsSession &operator=(const LammpsSession &) = delete;
+
+  // Run one or more lines; throws with LAMMPS's message if one fails.
+  void run(const std::string &lines)
+  {
+    const std::string message = try_run(lines);
+    if (!message.empty()) throw std::runtime_error("LAMMPS error: " + message);
+  }
+
+  // Run lines and return LAMMPS's error message, or "" if they all succeeded.
+  std::string try_run(const std::string &lines)
+  {
+    lammps_commands_string(handle, lines.c_str());
+    if (!lammps_has_error(handle)) return "";
+    char buffer[2048];
+    lammps_get_last_error_message(handle, buffer, sizeof(buffer));
+    return buffer;
+  }
+
+  // A thermo keyword (pe, press, ...) or a fix, compute or variable reference (f_ID[n], ...).
+  double thermo(const std::string &keyword)
+  {
+    if (keyword.find('_') != std::string::npos) return equal_variable(keyword);
+    return lammps_get_thermo(handle, keyword.c_str());
+  }
+
+  double equal_variable(const std::string &expression)
+  {
+    run("variable mesophyll_probe equal " + expression);
+    auto *value = static_cast<double *>(lammps_extract_variable(handle, "mesophyll_probe", nullptr));
+    if (!value) {
+      char buffer[2048] = "";
+      lammps_get_last_error_message(handle, buffer, sizeof(buffer));
+      throw std::runtime_error("cannot evaluate " + expression + ": " + buffer);
+    }
+    const double result = *value;
+    free(value);
+    return result;
+  }
+
+  int natoms() { return (int) lammps_get_natoms(handle); }
+
+  // Per-atom values ordered by atom ID, on every rank.
+  std::vector<double> gather(const char *name, int count)
+  {
+    std::vector<double> data((size_t) natoms() * count);
+    lammps_gather(handle, name, 1 /* double */, count, data.data());
+    return data;
+  }
+
+  void scatter(const char *name, int count, std::vector<double> &data)
+  {
+    lammps_scatter(handle, name, 1 /* double */, count, data.data());
+  }
+
+ private:
+  void *handle;
+};
+
+#endif

@@ -1,0 +1,468 @@
+// Cell mechanics of the deformable-polygon model: fix dpoly/cells (area), bond dpoly/segment
+// (length) and angle dpoly/bending (turning angle). Every test runs on any number of ranks
+// unless it says otherwise; ctest runs this binary on 1, 2 and 4.
+#include "lammps_session.h"
+
+#include "gtest/gtest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+const double PI = 3.14159265358979323846;
+
+std::string data_file(const std::string &name)
+{
+  const char *dir = getenv("MESOPHYLL_TEST_DATA");
+  return std::string(dir ? dir : "data") + "/" + name;
+}
+
+int world_size()
+{
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+// Scratch file name that all ranks agree on and that differs between test binaries runs.
+std::string scratch(const std::string &name)
+{
+  return "scratch." + std::to_string(world_size()) + "." + name;
+}
+
+const char *VERTEX_STATE = "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n";
+
+struct Model {
+  std::string newton_bond = "on";
+  double eps_a = 1.0, eps_l = 1.0, eps_b = 0.4;
+};
+
+std::string setup_commands(const std::string &data, const Model &m = Model())
+{
+  return "units lj\ndimension 2\natom_style molecular\natom_modify map array\n"
+         "boundary p p p\nnewton on " + m.newton_bond + "\n" + VERTEX_STATE +
+      "bond_style dpoly/segment\nangle_style dpoly/bending\n" +
+      "read_data " + data + " fix Vertices NULL Vertices\n" +
+      "bond_coeff * " + std::to_string(m.eps_l) + "\n" + "angle_coeff * " + std::to_string(m.eps_b) + "\ncomm_modify cutoff 2.0\n" +
+      "fix cells all dpoly/cells eps_a " + std::to_string(m.eps_a) + "\n" +
+      "thermo_style custom step pe ebond eangle f_cells press pxx pyy pxy\n"
+      "thermo_modify norm no\n";
+}
+
+// Give every vertex its own preferred values (deterministic in the atom ID, so the same on any
+// number of ranks) and every cell its own a0, so that no term sits at its minimum.
+const char *PERTURB_STATE = "variable l0 atom d_l0*(1.0+0.15*sin(3.7*id))\n"
+                            "variable th0 atom d_theta0+0.3*cos(2.3*id)\n"
+                            "variable a0 atom 1.0+0.4*sin(1.9*mol)\n"
+                            "set group all d_l0 v_l0\nset group all d_theta0 v_th0\n"
+                            "set group all d_a0 v_a0\n";
+
+std::unique_ptr<LammpsSession> deformed_tissue(const Model &m = Model(),
+                                               MPI_Comm comm = MPI_COMM_WORLD)
+{
+  auto s = std::make_unique<LammpsSession>(comm);
+  s->run(setup_commands(data_file("deformed.data"), m));
+  s->run(PERTURB_STATE);
+  s->run("run 0 post no");
+  return s;
+}
+
+double max_abs(const std::vector<double> &v)
+{
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+
+// Largest force difference over the largest force.
+double relative_force_error(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double diff = 0.0;
+  for (size_t k = 0; k < a.size(); k++) diff = std::max(diff, std::fabs(a[k] - b[k]));
+  return diff / std::max(max_abs(a), 1.0e-12);
+}
+
+double potential_energy_at(LammpsSession &s, std::vector<double> x)
+{
+  s.scatter("x", 3, x);
+  s.run("run 0 post no");
+  return s.thermo("pe");
+}
+
+// Forces of each term alone, and all together, against central differences of the energy.
+void check_forces_by_finite_differences(const Model &m)
+{
+  auto s = deformed_tissue(m);
+  const std::vector<double> x0 = s->gather("x", 3);
+  const std::vector<double> f = s->gather("f", 3);
+  ASSERT_GT(max_abs(f), 1.0e-3) << "the perturbed tissue should not be at rest";
+
+  const double h = 1.0e-5;
+  std::vector<double> numeric(f.size(), 0.0);
+  for (int k = 0; k < s->natoms(); k++)
+    for (int d = 0; d < 2; d++) {
+      std::vector<double> x = x0;
+      x[3 * k + d] = x0[3 * k + d] + h;
+      const double up = potential_energy_at(*s, x);
+      x[3 * k + d] = x0[3 * k + d] - h;
+      const double down = potential_energy_at(*s, x);
+      numeric[3 * k + d] = -(up - down) / (2.0 * h);
+    }
+  EXPECT_LT(relative_force_error(f, numeric), 1.0e-7);
+}
+
+}    // namespace
+
+TEST(CellMechanics, RegularPolygonEnergiesAreAnalytic)
+{
+  LammpsSession s;
+  s.run(setup_commands(data_file("single.data")));
+  const int n = s.natoms();
+  ASSERT_EQ(n, 16);
+  const std::vector<double> x = s.gather("x", 3);
+  const double radius = std::hypot(x[0] - x[3 * (n / 2)], x[1] - x[3 * (n / 2) + 1]) / 2.0;
+  const double area = 0.5 * n * radius * radius * sin(2.0 * PI / n);
+  const double length = 2.0 * radius * sin(PI / n);
+
+  // bending is zero at theta0 = 2 pi/n, as the generator sets it
+  s.run("run 0 post no");
+  EXPECT_NEAR(s.thermo("eangle"), 0.0, 1.0e-20);
+
+  const double a0 = 1.7, l0 = 0.31, dtheta = 0.05;
+  s.run("set group all d_a0 1.7\nset group all d_l0 0.31\n"
+        "variable th0 atom d_theta0+0.05\nset group all d_theta0 v_th0\nrun 0 post no");
+  const double area_energy = 0.5 * std::pow(area / a0 - 1.0, 2);
+  const double length_energy = n * 0.5 * std::pow(length / l0 - 1.0, 2);
+  const double bending_energy = n * 0.5 * 0.4 * dtheta * dtheta;
+  EXPECT_NEAR(s.thermo("f_cells"), area_energy, 1.0e-13);
+  EXPECT_NEAR(s.thermo("ebond"), length_energy, 1.0e-13);
+  EXPECT_NEAR(s.thermo("eangle"), bending_energy, 1.0e-13);
+  EXPECT_NEAR(s.thermo("pe"), area_energy + length_energy + bending_energy, 1.0e-13);
+  EXPECT_NEAR(s.equal_variable("f_cells[2]"), area, 1.0e-13);
+  EXPECT_EQ(s.equal_variable("f_cells[1]"), 1.0);
+}
+
+TEST(CellMechanics, AllTermsMatchFiniteDifferences)
+{
+  check_forces_by_finite_differences(Model());
+}
+
+TEST(CellMechanics, AreaTermMatchesFiniteDifferences)
+{
+  check_forces_by_finite_differences({"on", 1.0, 0.0, 0.0});
+}
+
+TEST(CellMechanics, SegmentTermMatchesFiniteDifferences)
+{
+  check_forces_by_finite_differences({"on", 0.0, 1.0, 0.0});
+}
+
+TEST(CellMechanics, BendingTermMatchesFiniteDifferences)
+{
+  check_forces_by_finite_differences({"on", 0.0, 0.0, 1.0});
+}
+
+TEST(CellMechanics, NewtonBondOffMatchesFiniteDifferences)
+{
+  check_forces_by_finite_differences({"off", 1.0, 1.0, 0.4});
+}
+
+// P = -dU/dA for an affine deformation at zero temperature; pxx = -(1/Ly) dU/dLx.
+TEST(CellMechanics, PressureMatchesBoxDerivative)
+{
+  auto s = deformed_tissue();
+  const double press = s->thermo("press"), pxx = s->thermo("pxx"), pyy = s->thermo("pyy");
+  const double lx = s->equal_variable("lx"), ly = s->equal_variable("ly");
+  ASSERT_GT(std::fabs(press), 1.0e-4) << "the perturbed tissue should be under stress";
+
+  const double e = 1.0e-5;
+  auto scale_energy = [&](double sx, double sy) {
+    char cmd[256];
+    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
+             sx, sy);
+    s->run(cmd);
+    const double u = s->thermo("pe");
+    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
+             1.0 / sx, 1.0 / sy);
+    s->run(cmd);
+    return u;
+  };
+
+  const double iso_up = scale_energy(1.0 + e, 1.0 + e), iso_down = scale_energy(1.0 - e, 1.0 - e);
+  const double area_up = lx * ly * (1.0 + e) * (1.0 + e), area_down = lx * ly * (1.0 - e) * (1.0 - e);
+  const double p_numeric = -(iso_up - iso_down) / (area_up - area_down);
+  EXPECT_NEAR(press, p_numeric, 1.0e-7 * std::fabs(press));
+
+  const double x_up = scale_energy(1.0 + e, 1.0), x_down = scale_energy(1.0 - e, 1.0);
+  const double pxx_numeric = -(x_up - x_down) / (2.0 * e * lx * ly);
+  EXPECT_NEAR(pxx, pxx_numeric, 1.0e-7 * std::fabs(pxx));
+
+  const double y_up = scale_energy(1.0, 1.0 + e), y_down = scale_energy(1.0, 1.0 - e);
+  const double pyy_numeric = -(y_up - y_down) / (2.0 * e * lx * ly);
+  EXPECT_NEAR(pyy, pyy_numeric, 1.0e-7 * std::fabs(pyy));
+}
+
+TEST(CellMechanics, NoNetForceOrTorque)
+{
+  auto s = deformed_tissue();
+  s->run("compute unwrapped all property/atom xu yu\n"
+         "variable torque atom c_unwrapped[1]*fy-c_unwrapped[2]*fx\ncompute net all reduce sum fx fy v_torque\n"
+         "thermo_style custom step pe c_net[*]\nrun 0 post no");
+  const double scale = max_abs(s->gather("f", 3));
+  EXPECT_NEAR(s->equal_variable("c_net[1]"), 0.0, 1.0e-12 * scale);
+  EXPECT_NEAR(s->equal_variable("c_net[2]"), 0.0, 1.0e-12 * scale);
+  EXPECT_NEAR(s->equal_variable("c_net[3]"), 0.0, 1.0e-11 * scale);
+}
+
+TEST(CellMechanics, NewtonBondOnAndOffAgree)
+{
+  auto on = deformed_tissue({"on", 1.0, 1.0, 0.4});
+  auto off = deformed_tissue({"off", 1.0, 1.0, 0.4});
+  EXPECT_NEAR(on->thermo("pe"), off->thermo("pe"), 1.0e-13 * std::fabs(on->thermo("pe")));
+  EXPECT_NEAR(on->thermo("press"), off->thermo("press"), 1.0e-12 * std::fabs(on->thermo("press")));
+  EXPECT_LT(relative_force_error(on->gather("f", 3), off->gather("f", 3)), 1.0e-13);
+}
+
+// On several ranks: each rank also runs the same system alone, as the reference.
+TEST(CellMechanics, ParallelRunMatchesSerialRun)
+{
+  if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
+  auto parallel = deformed_tissue();
+  auto serial = deformed_tissue(Model(), MPI_COMM_SELF);
+  for (const char *keyword : {"pe", "ebond", "eangle", "f_cells", "press", "pxx", "pyy", "pxy"})
+    EXPECT_NEAR(parallel->thermo(keyword), serial->thermo(keyword),
+                1.0e-12 * std::max(1.0, std::fabs(serial->thermo(keyword))))
+        << keyword;
+  EXPECT_LT(relative_force_error(serial->gather("f", 3), parallel->gather("f", 3)), 1.0e-12);
+}
+
+TEST(CellMechanics, RestartPreservesStateAndEnergy)
+{
+  const std::string restart = scratch("cells.restart");
+  auto before = deformed_tissue();
+  before->run("write_restart " + restart);
+
+  LammpsSession after;
+  after.run("read_restart " + restart + "\n" + VERTEX_STATE +
+            "comm_modify cutoff 2.0\nfix cells all dpoly/cells eps_a 1.0\n"
+            "thermo_style custom step pe ebond eangle f_cells press\nthermo_modify norm no\n"
+            "run 0 post no");
+  for (const char *name : {"x", "d_sigma", "d_l0", "d_theta0", "d_a0"}) {
+    const int count = std::string(name) == "x" ? 3 : 1;
+    EXPECT_EQ(before->gather(name, count), after.gather(name, count)) << name;
+  }
+  for (const char *keyword : {"pe", "ebond", "eangle", "f_cells", "press"})
+    EXPECT_DOUBLE_EQ(before->thermo(keyword), after.thermo(keyword)) << keyword;
+  if (world_size() == 1) remove(restart.c_str());
+}
+
+TEST(CellMechanics, DataFileRoundTripPreservesStateAndEnergy)
+{
+  const std::string data = scratch("cells.data");
+  auto before = deformed_tissue();
+  before->run("write_data " + data);
+
+  LammpsSession after;
+  after.run(setup_commands(data) + "run 0 post no");
+  for (const char *name : {"x", "d_sigma", "d_l0", "d_theta0", "d_a0"}) {
+    const int count = std::string(name) == "x" ? 3 : 1;
+    EXPECT_EQ(before->gather(name, count), after.gather(name, count)) << name;
+  }
+  for (const char *keyword : {"pe", "ebond", "eangle", "f_cells", "press"})
+    EXPECT_DOUBLE_EQ(before->thermo(keyword), after.thermo(keyword)) << keyword;
+}
+
+// A regular ring with theta0 = 2 pi/n, uniform l0 and a0 above its area stays regular and
+// settles at the circumradius R that minimizes
+//   U(R) = (eps_a/2)(a(R)/a0 - 1)^2 + n (eps_l/2)(l(R)/l0 - 1)^2,
+//   a(R) = (n/2) R^2 sin(2 pi/n),  l(R) = 2 R sin(pi/n).
+TEST(CellMechanics, SingleCellRelaxesToAnalyticState)
+{
+  LammpsSession s;
+  s.run(setup_commands(data_file("single.data")));
+  const int n = s.natoms();
+  const double a0 = 1.6, l0 = s.gather("d_l0", 1)[0];
+  s.run("set group all d_a0 1.6\nmin_style cg\nminimize 0.0 1.0e-13 20000 200000");
+
+  const double ca = 0.5 * n * sin(2.0 * PI / n), cl = 2.0 * sin(PI / n);
+  auto slope = [&](double r) {
+    return (ca * r * r / a0 - 1.0) * 2.0 * ca * r / a0 + n * (cl * r / l0 - 1.0) * cl / l0;
+  };
+  double lo = 0.1, hi = 3.0;
+  for (int it = 0; it < 200; it++) {
+    const double mid = 0.5 * (lo + hi);
+    (slope(mid) > 0.0 ? hi : lo) = mid;
+  }
+  const double radius = 0.5 * (lo + hi);
+
+  EXPECT_NEAR(s.equal_variable("f_cells[2]"), ca * radius * radius, 1.0e-8);
+  const std::vector<double> x = s.gather("x", 3);
+  for (int k = 0; k < n; k++) {
+    const int next = (k + 1) % n;
+    EXPECT_NEAR(std::hypot(x[3 * next] - x[3 * k], x[3 * next + 1] - x[3 * k + 1]), cl * radius,
+                1.0e-8);
+  }
+  EXPECT_NEAR(s.thermo("eangle"), 0.0, 1.0e-14);
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input: each gets an error that names the problem. Single rank: some are per-atom errors.
+
+namespace {
+
+// One cell of four vertices; 'angles' lists (prev, vertex, next) per line.
+const char *RING_BONDS = "1 1 1 2\n2 1 2 3\n3 1 3 4\n4 1 4 1\n";
+
+std::string square_data(const std::string &angles, int nangles = 4,
+                        const std::string &bonds = RING_BONDS)
+{
+  const std::string path = scratch("square.data");
+  FILE *fp = fopen(path.c_str(), "w");
+  fprintf(fp, "square\n\n4 atoms\n1 atom types\n4 bonds\n1 bond types\n%d angles\n1 angle types\n\n"
+              "0 4 xlo xhi\n0 4 ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\nAtoms # molecular\n\n"
+              "1 1 1 1 1 0\n2 1 1 2 1 0\n3 1 1 2 2 0\n4 1 1 1 2 0\n\n"
+              "Bonds\n\n%s\nAngles\n\n%s\n"
+              "Vertices\n\n1 1 1 1.5708 1\n2 1 1 1.5708 1\n3 1 1 1.5708 1\n4 1 1 1.5708 1\n",
+          nangles, bonds.c_str(), angles.c_str());
+  fclose(fp);
+  return path;
+}
+
+const char *CCW_ANGLES = "1 1 4 1 2\n2 1 1 2 3\n3 1 2 3 4\n4 1 3 4 1\n";
+
+std::string error_of(const std::string &commands)
+{
+  LammpsSession s;
+  return s.try_run(commands);
+}
+
+}    // namespace
+
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override
+  {
+    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  }
+};
+
+TEST_F(BadInput, ValidSquareIsAccepted)
+{
+  EXPECT_EQ(error_of(setup_commands(square_data(CCW_ANGLES)) + "run 0 post no"), "");
+}
+
+TEST_F(BadInput, ThreeDimensions)
+{
+  std::string cmds = setup_commands(square_data(CCW_ANGLES)) + "run 0 post no";
+  cmds.replace(cmds.find("dimension 2"), 11, "dimension 3");
+  EXPECT_NE(error_of(cmds).find("needs a 2d simulation"), std::string::npos);
+}
+
+TEST_F(BadInput, MissingVertexState)
+{
+  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES)) +
+                                   "unfix Vertices\nrun 0 post no");
+  EXPECT_NE(msg.find("needs the per-atom property d_sigma"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, VertexStateWithoutGhosts)
+{
+  std::string cmds = setup_commands(square_data(CCW_ANGLES)) + "run 0 post no";
+  cmds.replace(cmds.find(" ghost yes"), 10, "");
+  const std::string msg = error_of(cmds);
+  EXPECT_NE(msg.find("on ghost atoms too"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, NonPositiveStateValues)
+{
+  const std::string base = setup_commands(square_data(CCW_ANGLES));
+  std::string msg = error_of(base + "set atom 3 d_a0 -0.5\nrun 0 post no");
+  EXPECT_NE(msg.find("a0 = -0.5"), std::string::npos) << msg;
+  msg = error_of(base + "set group all d_a0 0\nrun 0 post no");
+  EXPECT_NE(msg.find("a0 = 0;"), std::string::npos) << msg;
+  msg = error_of(base + "set atom 2 d_l0 0\nrun 0 post no");
+  EXPECT_NE(msg.find("vertex 2 has l0 = 0"), std::string::npos) << msg;
+  msg = error_of(base + "set atom 4 d_sigma -1\nrun 0 post no");
+  EXPECT_NE(msg.find("vertex 4 has sigma = -1"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, PreferredAreaDiffersWithinCell)
+{
+  const std::string msg =
+      error_of(setup_commands(square_data(CCW_ANGLES)) + "set atom 2 d_a0 2.0\nrun 0 post no");
+  EXPECT_NE(msg.find("cell 1 has different a0"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, VertexWithTwoAngles)
+{
+  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES + std::string("5 1 1 2 4\n"), 5)) +
+                                   "run 0 post no");
+  EXPECT_NE(msg.find("vertex 2 is the centre of 2 angles"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, RingThatDoesNotClose)
+{
+  // vertex 4 points back to 3 instead of on to 1
+  const std::string msg =
+      error_of(setup_commands(square_data("1 1 4 1 2\n2 1 1 2 3\n3 1 2 3 4\n4 1 1 4 3\n")) +
+               "run 0 post no");
+  EXPECT_NE(msg.find("not a vertex of the same ring pointing back"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, TwoVertexRing)
+{
+  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES)) +
+                                   "set atom 3*4 mol 2\nrun 0 post no");
+  EXPECT_NE(msg.find("not a vertex of the same ring"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, ClockwiseRing)
+{
+  const std::string msg =
+      error_of(setup_commands(square_data("1 1 2 1 4\n2 1 3 2 1\n3 1 4 3 2\n4 1 1 4 3\n")) +
+               "run 0 post no");
+  EXPECT_NE(msg.find("cell 1 has area -1 <= 0"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, BondAcrossTheRing)
+{
+  const std::string msg = error_of(
+      setup_commands(square_data(CCW_ANGLES, 4, "1 1 1 2\n2 1 2 3\n3 1 3 4\n4 1 1 3\n")) +
+      "run 0 post no");
+  EXPECT_NE(msg.find("bond 1-3 is not a segment of a ring"), std::string::npos) << msg;
+}
+
+TEST_F(BadInput, BadCoefficientsAndKeywords)
+{
+  const std::string base = setup_commands(square_data(CCW_ANGLES));
+  EXPECT_NE(error_of(base + "bond_coeff 1 -2").find("eps_l must be >= 0, got -2"), std::string::npos);
+  EXPECT_NE(error_of(base + "bond_coeff 1 1 2").find("takes one coefficient"), std::string::npos);
+  EXPECT_NE(error_of(base + "angle_coeff 1 -0.1").find("eps_b must be >= 0, got -0.1"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "fix more all dpoly/cells eps_a -3").find("eps_a must be >= 0, got -3"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "fix more all dpoly/cells stiff 3").find("keyword: stiff"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "fix more all dpoly/cells\nrun 0").find("Only one fix dpoly/cells"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "fix_modify cells energy no\nrun 0").find("must count in both"),
+            std::string::npos);
+}
+
+TEST_F(BadInput, BoxRelaxNeedsLineSearchAndPeriodicBox)
+{
+  const std::string base = setup_commands(square_data(CCW_ANGLES));
+  std::string msg = error_of(base + "fix relax all box/relax iso 0.001\nmin_style fire\nminimize 0 1e-8 10 10");
+  EXPECT_NE(msg.find("Cannot use a damped dynamics min style with fix box/relax"), std::string::npos)
+      << msg;
+  std::string fixed = base + "fix relax all box/relax iso 0.001\nminimize 0 1e-8 10 10";
+  fixed.replace(fixed.find("boundary p p p"), 14, "boundary f p p");
+  msg = error_of(fixed);
+  EXPECT_NE(msg.find("non-periodic x dimension"), std::string::npos) << msg;
+}
