@@ -173,6 +173,18 @@ TEST(CellMechanics, NewtonBondOffMatchesFiniteDifferences)
   check_forces_by_finite_differences({"off", 1.0, 1.0, 0.4});
 }
 
+// single() of the bond and angle styles, summed over all bonds and angles, equals compute()
+TEST(CellMechanics, SingleMatchesCompute)
+{
+  auto s = deformed_tissue();
+  s->run("compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
+         "compute esum all reduce sum c_segments inputs local\n"
+         "compute asum all reduce sum c_bends inputs local\n"
+         "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
+  EXPECT_NEAR(s->thermo("c_esum"), s->thermo("ebond"), 1.0e-12 * s->thermo("ebond"));
+  EXPECT_NEAR(s->thermo("c_asum"), s->thermo("eangle"), 1.0e-12 * s->thermo("eangle"));
+}
+
 // P = -dU/dA for an affine deformation at zero temperature; pxx = -(1/Ly) dU/dLx.
 TEST(CellMechanics, PressureMatchesBoxDerivative)
 {

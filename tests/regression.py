@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Rerun an example and compare its thermo output with the example's reference log.
+
+    regression.py --lmp BUILD/lmp --example examples/NAME --input in.X --np N [--mpirun CMD]
+                  [--rtol R] [--atol A] [--update]
+
+The reference is examples/NAME/log.<date>.<X>.g++.<N> (the newest, if several). Every thermo
+row of every run must match column by column within |new - ref| <= atol + rtol*|ref|, with the
+same columns and rows. --update runs the example and writes a new reference log instead.
+Standard library only.
+"""
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def thermo_blocks(path):
+    """List of (columns, rows) for every thermo table in a LAMMPS log."""
+    blocks, columns, rows = [], None, []
+    with open(path) as log:
+        for line in log:
+            words = line.split()
+            if columns is None:
+                if words and words[0] == "Step":
+                    columns, rows = words, []
+            elif words and words[0] == "Loop":
+                blocks.append((columns, rows))
+                columns = None
+            elif len(words) == len(columns):
+                try:
+                    rows.append([float(w) for w in words])
+                except ValueError:
+                    pass    # a warning line inside the table
+    return blocks
+
+
+def compare(reference, new, rtol, atol):
+    """Return a list of differences, empty if the logs agree."""
+    ref_blocks, new_blocks = thermo_blocks(reference), thermo_blocks(new)
+    problems = []
+    if len(ref_blocks) != len(new_blocks):
+        return [f"{len(new_blocks)} thermo tables, reference has {len(ref_blocks)}"]
+    for b, ((ref_cols, ref_rows), (new_cols, new_rows)) in enumerate(zip(ref_blocks, new_blocks)):
+        if ref_cols != new_cols:
+            problems.append(f"table {b}: columns {new_cols}, reference {ref_cols}")
+            continue
+        if len(ref_rows) != len(new_rows):
+            problems.append(f"table {b}: {len(new_rows)} rows, reference has {len(ref_rows)}")
+        for ref_row, new_row in zip(ref_rows, new_rows):
+            for col, ref, val in zip(ref_cols, ref_row, new_row):
+                if abs(val - ref) > atol + rtol * abs(ref):
+                    problems.append(f"table {b} step {int(ref_row[0])} {col}: {val!r} vs "
+                                    f"reference {ref!r}")
+    return problems
+
+
+def reference_log(example, name, np):
+    logs = sorted(glob.glob(os.path.join(example, f"log.*.{name}.g++.{np}")), key=os.path.getmtime)
+    return logs[-1] if logs else None
+
+
+def run_example(args, workdir, log_name):
+    shutil.copytree(args.example, workdir, dirs_exist_ok=True)
+    command = [args.lmp, "-in", args.input, "-log", log_name, "-screen", "none"]
+    if args.np > 1:
+        command = args.mpirun.split() + ["-np", str(args.np), "--oversubscribe"] + command
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    result = subprocess.run(command, cwd=workdir, env=env)
+    if result.returncode != 0:
+        sys.exit(f"regression: {' '.join(command)} failed with exit code {result.returncode}")
+    return os.path.join(workdir, log_name)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--example", required=True)
+    p.add_argument("--input", required=True)
+    p.add_argument("--np", type=int, default=1)
+    p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--rtol", type=float, default=1e-8)
+    p.add_argument("--atol", type=float, default=1e-12)
+    p.add_argument("--update", action="store_true", help="write a new reference log")
+    args = p.parse_args()
+    args.lmp = os.path.abspath(args.lmp)
+    name = args.input[3:] if args.input.startswith("in.") else args.input
+
+    with tempfile.TemporaryDirectory() as workdir:
+        new_log = run_example(args, workdir, "log.new")
+        if args.update:
+            stamp = time.strftime("%d%b%y")
+            target = os.path.join(args.example, f"log.{stamp}.{name}.g++.{args.np}")
+            for old in glob.glob(os.path.join(args.example, f"log.*.{name}.g++.{args.np}")):
+                os.remove(old)
+            shutil.copy(new_log, target)
+            print(f"wrote {target}")
+            return
+        reference = reference_log(args.example, name, args.np)
+        if reference is None:
+            sys.exit(f"regression: no reference log for {name} on {args.np} ranks in {args.example}")
+        problems = compare(reference, new_log, args.rtol, args.atol)
+        rows = sum(len(rows) for _, rows in thermo_blocks(reference))
+    if problems:
+        print(f"{len(problems)} differences from {reference}:")
+        print("\n".join(problems[:40]))
+        sys.exit(1)
+    print(f"{name} on {args.np} ranks matches {os.path.basename(reference)} ({rows} thermo rows)")
+
+
+if __name__ == "__main__":
+    main()
