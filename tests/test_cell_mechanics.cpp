@@ -1,7 +1,7 @@
 // Cell mechanics of the deformable-polygon model: fix dpoly/cells (area), bond dpoly/segment
 // (length) and angle dpoly/bending (turning angle). Every test runs on any number of ranks
 // unless it says otherwise; ctest runs this binary on 1, 2 and 4.
-#include "lammps_session.h"
+#include "test_helpers.h"
 
 #include "gtest/gtest.h"
 
@@ -13,28 +13,9 @@
 #include <string>
 #include <vector>
 
+using namespace test;
+
 namespace {
-
-const double PI = 3.14159265358979323846;
-
-std::string data_file(const std::string &name)
-{
-  const char *dir = getenv("MESOPHYLL_TEST_DATA");
-  return std::string(dir ? dir : "data") + "/" + name;
-}
-
-int world_size()
-{
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
-
-// Scratch file name that all ranks agree on and that differs between test binaries runs.
-std::string scratch(const std::string &name)
-{
-  return "scratch." + std::to_string(world_size()) + "." + name;
-}
 
 const char *VERTEX_STATE = "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n";
 
@@ -73,48 +54,12 @@ std::unique_ptr<LammpsSession> deformed_tissue(const Model &m = Model(),
   return s;
 }
 
-double max_abs(const std::vector<double> &v)
-{
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::fabs(x));
-  return m;
-}
-
-// Largest force difference over the largest force.
-double relative_force_error(const std::vector<double> &a, const std::vector<double> &b)
-{
-  double diff = 0.0;
-  for (size_t k = 0; k < a.size(); k++) diff = std::max(diff, std::fabs(a[k] - b[k]));
-  return diff / std::max(max_abs(a), 1.0e-12);
-}
-
-double potential_energy_at(LammpsSession &s, std::vector<double> x)
-{
-  s.scatter("x", 3, x);
-  s.run("run 0 post no");
-  return s.thermo("pe");
-}
-
 // Forces of each term alone, and all together, against central differences of the energy.
 void check_forces_by_finite_differences(const Model &m)
 {
   auto s = deformed_tissue(m);
-  const std::vector<double> x0 = s->gather("x", 3);
-  const std::vector<double> f = s->gather("f", 3);
-  ASSERT_GT(max_abs(f), 1.0e-3) << "the perturbed tissue should not be at rest";
-
-  const double h = 1.0e-5;
-  std::vector<double> numeric(f.size(), 0.0);
-  for (int k = 0; k < s->natoms(); k++)
-    for (int d = 0; d < 2; d++) {
-      std::vector<double> x = x0;
-      x[3 * k + d] = x0[3 * k + d] + h;
-      const double up = potential_energy_at(*s, x);
-      x[3 * k + d] = x0[3 * k + d] - h;
-      const double down = potential_energy_at(*s, x);
-      numeric[3 * k + d] = -(up - down) / (2.0 * h);
-    }
-  EXPECT_LT(relative_force_error(f, numeric), 1.0e-7);
+  ASSERT_GT(max_abs(s->gather("f", 3)), 1.0e-3) << "the perturbed tissue should not be at rest";
+  EXPECT_LT(finite_difference_error(*s), 1.0e-7);
 }
 
 }    // namespace

@@ -55,13 +55,16 @@ def build(args):
     return box, atoms, bonds, angles, state
 
 
-def write(path, box, atoms, bonds, angles, state, comment):
+def write(path, box, atoms, bonds, angles, state, comment, bond_types=1, shuffle=0):
     with open(path, "w") as out:
         out.write(f"LAMMPS data file: {comment}\n\n")
-        out.write(f"{len(atoms)} atoms\n1 atom types\n{len(bonds)} bonds\n1 bond types\n")
+        out.write(f"{len(atoms)} atoms\n1 atom types\n{len(bonds)} bonds\n{bond_types} bond types\n")
         out.write(f"{len(angles)} angles\n1 angle types\n\n")
         out.write(f"0 {box:.16g} xlo xhi\n0 {box:.16g} ylo yhi\n-0.5 0.5 zlo zhi\n\n")
         out.write("Masses\n\n1 1.0\n\nAtoms # molecular\n\n")
+        if shuffle:    # the same atoms in another order, to test order independence
+            atoms = list(atoms)
+            random.Random(shuffle).shuffle(atoms)
         for a in atoms:
             out.write(f"{a[0]} {a[1]} 1 {a[2]:.16g} {a[3]:.16g} 0 {a[4]} {a[5]} 0\n")
         out.write("\nBonds\n\n")
@@ -90,12 +93,19 @@ def main():
     p.add_argument("--jitter", type=float, default=0.0,
                    help="random radial displacement of vertices, relative (default 0)")
     p.add_argument("--seed", type=int, default=0, help="random seed; 0 = no random phase")
+    p.add_argument("--bond-types", type=int, default=1,
+                   help="bond types to declare (ring segments are type 1; default 1)")
+    p.add_argument("--shuffle", type=int, default=0,
+                   help="list the atoms in a random order drawn with this seed (0 = in order)")
     args = p.parse_args()
     if args.cells < 1 or args.vertices < 3 or args.a0 <= 0 or args.calA0 <= 0 or args.spacing <= 0:
         p.error("need cells >= 1, vertices >= 3 and positive a0, calA0, spacing")
+    if args.bond_types < 1:
+        p.error("need --bond-types >= 1")
     box, atoms, bonds, angles, state = build(args)
     write(args.output, box, atoms, bonds, angles, state,
-          f"{args.cells} cells of {args.vertices} vertices (MESOPHYLL tools/make_cells.py)")
+          f"{args.cells} cells of {args.vertices} vertices (MESOPHYLL tools/make_cells.py)",
+          args.bond_types, args.shuffle)
 
 
 if __name__ == "__main__":

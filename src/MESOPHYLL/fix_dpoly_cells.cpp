@@ -7,10 +7,12 @@
 
 #include "atom.h"
 #include "atom_vec.h"
+#include "bond_mesophyll_adhesion.h"
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_ring.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
 #include "modify.h"
 
@@ -62,7 +64,7 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
 
 int FixDPolyCells::setmask()
 {
-  return POST_FORCE | MIN_POST_FORCE;
+  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE;
 }
 
 void FixDPolyCells::init()
@@ -84,9 +86,14 @@ void FixDPolyCells::init()
                       "do not use fix_modify energy no or virial no with it", id);
 }
 
-void FixDPolyCells::setup(int vflag)
+// before the first force evaluation of a run, so that every style sees current cells
+void FixDPolyCells::setup_pre_force(int /*vflag*/)
 {
   refresh_cells();
+}
+
+void FixDPolyCells::setup(int vflag)
+{
   post_force(vflag);
 }
 
@@ -115,6 +122,7 @@ void FixDPolyCells::refresh_cells()
 {
   gather_rings();
   check_ring_images();
+  refresh_adhesion();
   measure_cells();
   for (int c = 0; c < ncells(); c++)
     if (areas[c] <= 0.0)
@@ -171,6 +179,8 @@ void FixDPolyCells::gather_rings()
                  v.tag, v.molecule, v.next);
     members[v.molecule].push_back(&v);
   }
+  rings.clear();
+  for (const auto &v : all) rings[v.tag] = {v.prev, v.next};
 
   cell_ids.clear();
   for (const auto &m : members) cell_ids.push_back(m.first);
@@ -215,6 +225,15 @@ void FixDPolyCells::gather_rings()
   areas.assign(n, 0.0);
   perimeters.assign(n, 0.0);
   area_slopes.assign(n, 0.0);
+}
+
+void FixDPolyCells::refresh_adhesion()
+{
+  auto *adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
+  if (adhesion)
+    adhesion_counts.build(adhesion->gather_bonds());
+  else
+    adhesion_counts.build({});
 }
 
 int FixDPolyCells::cell_index(tagint molecule) const

@@ -12,6 +12,7 @@ FixStyle(dpoly/cells,FixDPolyCells);
 #ifndef LMP_FIX_DPOLY_CELLS_H
 #define LMP_FIX_DPOLY_CELLS_H
 
+#include "dpoly_adhesion.h"
 #include "fix.h"
 
 #include <unordered_map>
@@ -29,8 +30,11 @@ class FixDPolyCells : public Fix {
 
   int setmask() override;
   void init() override;
+  void setup_pre_force(int) override;
   void setup(int) override;
   void min_setup(int) override;
+  void pre_force(int) override {}
+  void min_pre_force(int) override {}
   void post_force(int) override;
   void min_post_force(int) override;
   double compute_scalar() override;
@@ -48,8 +52,21 @@ class FixDPolyCells : public Fix {
   double preferred_area(int cell) const { return preferred_areas[cell]; }
   int vertex_count(int cell) const { return vertex_counts[cell]; }
 
-  // Re-read cells, ring order and preferred areas (collective): call after changing them.
+  // Ring neighbours of any vertex of the group, by atom ID (every rank knows all of them).
+  struct RingNeighbours {
+    tagint prev, next;
+  };
+  const RingNeighbours &ring_neighbours(tagint atom) const { return rings.at(atom); }
+
+  // Adhesive bonds per vertex and contact numbers per cell (bond_style mesophyll/adhesion).
+  const DPoly::AdhesionCounts &adhesion() const { return adhesion_counts; }
+
+  // Re-read cells, ring order, preferred areas and adhesive bonds (collective): call after
+  // changing any of them between runs. Runs by itself at the start of every run and minimize.
   void refresh_cells();
+  void refresh_adhesion();
+  // Take the adhesive bonds as given (by a style that just changed them).
+  void set_adhesion(const std::vector<DPoly::AdhesiveBond> &bonds) { adhesion_counts.build(bonds); }
 
  private:
   double area_stiffness;    // eps_a
@@ -58,6 +75,8 @@ class FixDPolyCells : public Fix {
   std::vector<tagint> cell_ids;    // sorted molecule IDs of the cells
   std::vector<int> dense_index;    // molecule ID -> cell, when IDs are dense
   std::unordered_map<tagint, int> sparse_index;    // otherwise
+  std::unordered_map<tagint, RingNeighbours> rings;
+  DPoly::AdhesionCounts adhesion_counts;
   std::vector<int> vertex_counts;
   std::vector<double> preferred_areas, areas, perimeters, area_slopes;    // area_slope = dU/da
 

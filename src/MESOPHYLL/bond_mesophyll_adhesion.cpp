@@ -1,0 +1,258 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "bond_mesophyll_adhesion.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "fix_dpoly_cells.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using DPoly::AdhesiveBond;
+using DPoly::ContactRule;
+
+BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
+    Bond(lmp), contact_stiffness(nullptr), rule(ContactRule::BONDS), cells(nullptr)
+{
+  born_matrix_enable = 0;
+}
+
+BondMesophyllAdhesion::~BondMesophyllAdhesion()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(contact_stiffness);
+  }
+}
+
+void BondMesophyllAdhesion::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(contact_stiffness, np1, "bond:contact_stiffness");
+  memory->create(setflag, np1, "bond:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+}
+
+void BondMesophyllAdhesion::settings(int narg, char **arg)
+{
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "z") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "bond_style mesophyll/adhesion z", error);
+      if (strcmp(arg[iarg + 1], "bonds") == 0)
+        rule = ContactRule::BONDS;
+      else if (strcmp(arg[iarg + 1], "cells") == 0)
+        rule = ContactRule::CELLS;
+      else
+        error->all(FLERR, "Bond style mesophyll/adhesion z must be 'bonds' or 'cells', got '{}'",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Unknown bond_style mesophyll/adhesion keyword: {}", arg[iarg]);
+  }
+}
+
+void BondMesophyllAdhesion::init_style()
+{
+  auto fixes = modify->get_fix_by_style("^dpoly/cells$");
+  if (fixes.empty())
+    error->all(FLERR, "Bond style mesophyll/adhesion needs fix dpoly/cells, which counts the "
+                      "contacts of each cell");
+  cells = dynamic_cast<FixDPolyCells *>(fixes.front());
+  DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+}
+
+double BondMesophyllAdhesion::contact_number(int i, int j)
+{
+  return cells->adhesion().pair_contact_number(atom->molecule[i], atom->molecule[j], rule);
+}
+
+/* ----------------------------------------------------------------------
+   U = eps_c/(2 z) (1 - r/s)^2 for r > s: F = -dU/dr = -(eps_c/z)(r/s - 1)/s, attractive
+------------------------------------------------------------------------- */
+
+void BondMesophyllAdhesion::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  double **x = atom->x;
+  double **f = atom->f;
+  tagint *molecule = atom->molecule;
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+
+  for (int n = 0; n < nbondlist; n++) {
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    const int type = bondlist[n][2];
+    if (molecule[i1] == molecule[i2])
+      error->one(FLERR, "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
+                        "adhesive bonds join different cells", atom->tag[i1], atom->tag[i2],
+                 molecule[i1]);
+
+    const double delx = x[i1][0] - x[i2][0];
+    const double dely = x[i1][1] - x[i2][1];
+    const double delz = x[i1][2] - x[i2][2];
+    const double r = sqrt(delx * delx + dely * dely + delz * delz);
+    const double s = 0.5 * (state.diameter[i1] + state.diameter[i2]);
+    if (r <= s) continue;    // overlap belongs to the pair style
+
+    const double scaled = contact_stiffness[type] / contact_number(i1, i2);
+    const double stretch = r / s - 1.0;
+    const double fbond = -scaled * stretch / (s * r);
+    const double ebond = eflag ? 0.5 * scaled * stretch * stretch : 0.0;
+
+    if (newton_bond || i1 < nlocal) {
+      f[i1][0] += delx * fbond;
+      f[i1][1] += dely * fbond;
+      f[i1][2] += delz * fbond;
+    }
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= delx * fbond;
+      f[i2][1] -= dely * fbond;
+      f[i2][2] -= delz * fbond;
+    }
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+  }
+}
+
+std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  double **x = atom->x;
+  tagint *tag = atom->tag;
+  std::vector<AdhesiveBond> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const int type = atom->bond_type[i][m];
+      const tagint partner = atom->bond_atom[i][m];
+      if (!is_adhesive_type(type)) continue;
+      if (!force->newton_bond && partner < tag[i]) continue;    // stored twice: count once
+      const int j = domain->closest_image(i, atom->map(partner));
+      if (j < 0)
+        error->one(FLERR, "Bond style mesophyll/adhesion: atom {} of bond {}-{} is missing on "
+                          "this rank; increase the communication cutoff", partner, tag[i], partner);
+      const double r = sqrt((x[i][0] - x[j][0]) * (x[i][0] - x[j][0]) +
+                            (x[i][1] - x[j][1]) * (x[i][1] - x[j][1]));
+      AdhesiveBond b{std::min(tag[i], partner), std::max(tag[i], partner), 0, 0, type, r,
+                     0.5 * (state.diameter[i] + state.diameter[j])};
+      b.cell1 = (tag[i] < partner) ? atom->molecule[i] : atom->molecule[j];
+      b.cell2 = (tag[i] < partner) ? atom->molecule[j] : atom->molecule[i];
+      mine.push_back(b);
+    }
+  }
+
+  const int nbytes = (int) (mine.size() * sizeof(AdhesiveBond));
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<AdhesiveBond> all((displs.back() + counts.back()) / sizeof(AdhesiveBond));
+  MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE,
+                 world);
+  std::sort(all.begin(), all.end());
+  for (const auto &b : all)
+    if (b.cell1 == b.cell2)
+      error->all(FLERR, "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
+                        "adhesive bonds join different cells", b.atom1, b.atom2, b.cell1);
+  return all;
+}
+
+void BondMesophyllAdhesion::coeff(int narg, char **arg)
+{
+  if (narg != 2)
+    error->all(FLERR, "Bond style mesophyll/adhesion takes one coefficient (eps_c), got {}",
+               narg - 1);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+  const double eps_c = utils::numeric(FLERR, arg[1], false, lmp);
+  if (eps_c < 0.0)
+    error->all(FLERR, "Bond style mesophyll/adhesion eps_c must be >= 0, got {}", arg[1]);
+  for (int i = ilo; i <= ihi; i++) {
+    contact_stiffness[i] = eps_c;
+    setflag[i] = 1;
+  }
+}
+
+// the bond pulls only beyond contact, and the contact distance is per vertex pair
+double BondMesophyllAdhesion::equilibrium_distance(int /*type*/)
+{
+  return 0.0;
+}
+
+void BondMesophyllAdhesion::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  fwrite(&contact_stiffness[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&setflag[1], sizeof(int), atom->nbondtypes, fp);
+}
+
+void BondMesophyllAdhesion::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &contact_stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr, error);
+    utils::sfread(FLERR, &setflag[1], sizeof(int), atom->nbondtypes, fp, nullptr, error);
+  }
+  MPI_Bcast(&contact_stiffness[1], atom->nbondtypes, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&setflag[1], atom->nbondtypes, MPI_INT, 0, world);
+}
+
+void BondMesophyllAdhesion::write_restart_settings(FILE *fp)
+{
+  const int rule_id = (rule == ContactRule::BONDS) ? 0 : 1;
+  fwrite(&rule_id, sizeof(int), 1, fp);
+}
+
+void BondMesophyllAdhesion::read_restart_settings(FILE *fp)
+{
+  int rule_id = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &rule_id, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&rule_id, 1, MPI_INT, 0, world);
+  rule = rule_id ? ContactRule::CELLS : ContactRule::BONDS;
+}
+
+void BondMesophyllAdhesion::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i]) fprintf(fp, "%d %.15g\n", i, contact_stiffness[i]);
+}
+
+double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double &fforce)
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const double r = sqrt(rsq);
+  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  fforce = 0.0;
+  if (r <= s) return 0.0;
+  const double scaled = contact_stiffness[type] / contact_number(i, j);
+  const double stretch = r / s - 1.0;
+  fforce = -scaled * stretch / (s * r);
+  return 0.5 * scaled * stretch * stretch;
+}
+
+void *BondMesophyllAdhesion::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "eps_c") == 0) return (void *) contact_stiffness;
+  return nullptr;
+}

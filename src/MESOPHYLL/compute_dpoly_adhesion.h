@@ -1,0 +1,40 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(dpoly/adhesion,ComputeDPolyAdhesion);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_DPOLY_ADHESION_H
+#define LMP_COMPUTE_DPOLY_ADHESION_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+// Adhesive bonds as fix dpoly/cells last counted them: per vertex (0 = void-facing), and per
+// cell (cell ID, adhesive bonds, distinct cells bonded to it) as a global array.
+class ComputeDPolyAdhesion : public Compute {
+ public:
+  ComputeDPolyAdhesion(class LAMMPS *, int, char **);
+  ~ComputeDPolyAdhesion() override;
+  void init() override;
+  void compute_array() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  class FixDPolyCells *cells;
+  double **per_cell;
+  double *per_vertex;
+  int nmax;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,40 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "dpoly_adhesion.h"
+
+using namespace LAMMPS_NS;
+using namespace DPoly;
+
+void AdhesionCounts::build(const std::vector<AdhesiveBond> &bonds)
+{
+  per_vertex.clear();
+  per_cell.clear();
+  between_cells.clear();
+  for (const auto &b : bonds) {
+    per_vertex[b.atom1]++;
+    per_vertex[b.atom2]++;
+    per_cell[b.cell1]++;
+    per_cell[b.cell2]++;
+    between_cells[b.cell1][b.cell2]++;
+    between_cells[b.cell2][b.cell1]++;
+  }
+}
+
+void AdhesionCounts::remove(const AdhesiveBond &b)
+{
+  per_vertex[b.atom1]--;
+  per_vertex[b.atom2]--;
+  per_cell[b.cell1]--;
+  per_cell[b.cell2]--;
+  if (--between_cells[b.cell1][b.cell2] == 0) between_cells[b.cell1].erase(b.cell2);
+  if (--between_cells[b.cell2][b.cell1] == 0) between_cells[b.cell2].erase(b.cell1);
+}
+
+int AdhesionCounts::cell_contacts(tagint cell) const
+{
+  const auto found = between_cells.find(cell);
+  return found == between_cells.end() ? 0 : (int) found->second.size();
+}

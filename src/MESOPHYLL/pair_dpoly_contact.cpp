@@ -1,0 +1,238 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "pair_dpoly_contact.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+PairDPolyContact::PairDPolyContact(LAMMPS *lmp) :
+    Pair(lmp), contact_stiffness(nullptr), self_contact(1), largest_diameter(0.0)
+{
+  writedata = 1;
+  born_matrix_enable = 0;
+}
+
+PairDPolyContact::~PairDPolyContact()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(contact_stiffness);
+  }
+}
+
+void PairDPolyContact::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->ntypes + 1;
+  memory->create(setflag, np1, np1, "pair:setflag");
+  memory->create(cutsq, np1, np1, "pair:cutsq");
+  memory->create(contact_stiffness, np1, np1, "pair:contact_stiffness");
+  for (int i = 1; i < np1; i++)
+    for (int j = i; j < np1; j++) setflag[i][j] = 0;
+}
+
+void PairDPolyContact::settings(int narg, char **arg)
+{
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "self") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style dpoly/contact self", error);
+      self_contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Unknown pair_style dpoly/contact keyword: {}", arg[iarg]);
+  }
+}
+
+void PairDPolyContact::coeff(int narg, char **arg)
+{
+  if (narg != 3)
+    error->all(FLERR, "Pair style dpoly/contact takes one coefficient (eps_c), got {}", narg - 2);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double eps_c = utils::numeric(FLERR, arg[2], false, lmp);
+  if (eps_c < 0.0) error->all(FLERR, "Pair style dpoly/contact eps_c must be >= 0, got {}", arg[2]);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = std::max(jlo, i); j <= jhi; j++) {
+      contact_stiffness[i][j] = eps_c;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Pair style dpoly/contact: no type pair in {} {}", arg[0], arg[1]);
+}
+
+void PairDPolyContact::init_style()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, "Pair style dpoly/contact needs a 2d simulation (dimension 2)");
+  if (!atom->molecule_flag)
+    error->all(FLERR, "Pair style dpoly/contact needs molecule IDs: each cell is a molecule");
+  // Bonded vertices of different cells must still repel on overlap, so no special pair may be
+  // dropped from the neighbor list; ring neighbours are skipped by this style itself.
+  for (int k = 1; k <= 3; k++)
+    if (force->special_lj[k] != 1.0)
+      error->all(FLERR, "Pair style dpoly/contact needs special_bonds lj 1.0 1.0 1.0 (1-{} weight "
+                        "is {}): bonded vertices must still repel on overlap", k + 1,
+                 force->special_lj[k]);
+
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  double largest = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, state.diameter[i]);
+  MPI_Allreduce(&largest, &largest_diameter, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (largest_diameter <= 0.0)
+    error->all(FLERR, "Pair style dpoly/contact: no vertex has a diameter sigma > 0");
+  neighbor->add_request(this);
+}
+
+// the contact distance s never exceeds the largest vertex diameter
+double PairDPolyContact::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "Pair style dpoly/contact: coefficient for types {} {} is not set", i, j);
+  contact_stiffness[j][i] = contact_stiffness[i][j];
+  return largest_diameter;
+}
+
+bool PairDPolyContact::skip(int i, int j, tagint prev, tagint next) const
+{
+  if (atom->molecule[i] != atom->molecule[j]) return false;
+  if (!self_contact) return true;
+  return atom->tag[j] == prev || atom->tag[j] == next;
+}
+
+void PairDPolyContact::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  double **x = atom->x;
+  double **f = atom->f;
+  int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const DPoly::RingLinks links = DPoly::ring_links(atom, i);
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double rsq = delx * delx + dely * dely;
+      const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+      if (rsq >= s * s || skip(i, j, links.prev, links.next)) continue;
+
+      const double r = sqrt(rsq);
+      if (r == 0.0)
+        error->one(FLERR, "Pair style dpoly/contact: vertices {} and {} coincide", atom->tag[i],
+                   atom->tag[j]);
+      const double eps_c = contact_stiffness[type[i]][type[j]];
+      const double overlap = 1.0 - r / s;
+      const double fpair = eps_c * overlap / (s * r);
+      const double evdwl = eflag ? 0.5 * eps_c * overlap * overlap : 0.0;
+
+      f[i][0] += delx * fpair;
+      f[i][1] += dely * fpair;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= delx * fpair;
+        f[j][1] -= dely * fpair;
+      }
+      if (evflag) ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, delx, dely, 0.0);
+    }
+  }
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+double PairDPolyContact::single(int i, int j, int itype, int jtype, double rsq,
+                                double /*factor_coul*/, double /*factor_lj*/, double &fforce)
+{
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  fforce = 0.0;
+  const int owned = (i < atom->nlocal) ? i : j, other = (owned == i) ? j : i;
+  const DPoly::RingLinks links = DPoly::ring_links(atom, owned);
+  if (rsq >= s * s || rsq == 0.0 || skip(owned, other, links.prev, links.next)) return 0.0;
+  const double r = sqrt(rsq);
+  const double overlap = 1.0 - r / s;
+  fforce = contact_stiffness[itype][jtype] * overlap / (s * r);
+  return 0.5 * contact_stiffness[itype][jtype] * overlap * overlap;
+}
+
+void PairDPolyContact::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) fwrite(&contact_stiffness[i][j], sizeof(double), 1, fp);
+    }
+}
+
+void PairDPolyContact::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        if (comm->me == 0)
+          utils::sfread(FLERR, &contact_stiffness[i][j], sizeof(double), 1, fp, nullptr, error);
+        MPI_Bcast(&contact_stiffness[i][j], 1, MPI_DOUBLE, 0, world);
+      }
+    }
+}
+
+void PairDPolyContact::write_restart_settings(FILE *fp)
+{
+  fwrite(&self_contact, sizeof(int), 1, fp);
+}
+
+void PairDPolyContact::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &self_contact, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&self_contact, 1, MPI_INT, 0, world);
+}
+
+void PairDPolyContact::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) fprintf(fp, "%d %.15g\n", i, contact_stiffness[i][i]);
+}
+
+void PairDPolyContact::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      fprintf(fp, "%d %d %.15g\n", i, j, contact_stiffness[i][j]);
+}
+
+void *PairDPolyContact::extract(const char *str, int &dim)
+{
+  dim = 2;
+  if (strcmp(str, "eps_c") == 0) return (void *) contact_stiffness;
+  return nullptr;
+}
