@@ -191,7 +191,7 @@ TEST(CellMechanics, ParallelRunMatchesSerialRun)
 {
   if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
   auto parallel = deformed_tissue();
-  auto serial = deformed_tissue(Model(), MPI_COMM_SELF);
+  auto serial = deformed_tissue(Model(), self_comm());
   for (const char *keyword : {"pe", "ebond", "eangle", "f_cells", "press", "pxx", "pyy", "pxy"})
     EXPECT_NEAR(parallel->thermo(keyword), serial->thermo(keyword),
                 1.0e-12 * std::max(1.0, std::fabs(serial->thermo(keyword))))

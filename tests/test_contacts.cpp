@@ -201,7 +201,7 @@ TEST(Contacts, ParallelRunMatchesSerialRun)
 {
   if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
   auto parallel = adhesive_tissue();
-  auto serial = adhesive_tissue(Contacts(), MPI_COMM_SELF);
+  auto serial = adhesive_tissue(Contacts(), self_comm());
   for (const char *keyword : {"pe", "ebond", "epair", "press"})
     EXPECT_NEAR(parallel->thermo(keyword), serial->thermo(keyword),
                 1.0e-12 * std::max(1.0, std::fabs(serial->thermo(keyword))))
@@ -373,7 +373,7 @@ TEST(Breaking, SameBondsBreakOnAnyNumberOfRanks)
 {
   if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
   auto parallel = pulled_tissue(MPI_COMM_WORLD, data_file("overlapping.data"), 4);
-  auto serial = pulled_tissue(MPI_COMM_SELF, data_file("overlapping.data"), 4);
+  auto serial = pulled_tissue(self_comm(), data_file("overlapping.data"), 4);
   EXPECT_GT(parallel->thermo("f_break[4]"), 0.0) << "some bonds should have broken";
   EXPECT_EQ(parallel->thermo("f_break[4]"), serial->thermo("f_break[4]"));
   int rank = 0;

@@ -33,6 +33,17 @@ inline std::string scratch(const std::string &name)
   return "scratch." + std::to_string(world_size()) + "." + name;
 }
 
+// A communicator of this rank alone (LAMMPS's serial MPI stubs have no MPI_COMM_SELF, and there
+// the world is one rank anyway).
+inline MPI_Comm self_comm()
+{
+#ifdef MPI_COMM_SELF
+  return MPI_COMM_SELF;
+#else
+  return MPI_COMM_WORLD;
+#endif
+}
+
 inline double max_abs(const std::vector<double> &v)
 {
   double m = 0.0;

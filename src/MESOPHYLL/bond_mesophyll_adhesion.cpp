@@ -8,6 +8,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -159,13 +161,7 @@ std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
     }
   }
 
-  const int nbytes = (int) (mine.size() * sizeof(AdhesiveBond));
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<AdhesiveBond> all((displs.back() + counts.back()) / sizeof(AdhesiveBond));
-  MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE,
-                 world);
+  std::vector<AdhesiveBond> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   std::sort(all.begin(), all.end());
   for (const auto &b : all)
     if (b.cell1 == b.cell2)

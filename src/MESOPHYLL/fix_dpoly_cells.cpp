@@ -10,6 +10,7 @@
 #include "bond_mesophyll_adhesion.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "force.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -142,13 +144,7 @@ void FixDPolyCells::gather_rings()
   }
 
   // the whole ring table on every rank, so every rank reaches the same verdict
-  const int nbytes = (int) (mine.size() * sizeof(VertexRecord));
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<VertexRecord> all((displs.back() + counts.back()) / sizeof(VertexRecord));
-  MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE,
-                 world);
+  std::vector<VertexRecord> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   if (all.empty()) error->all(FLERR, "Fix dpoly/cells: group {} holds no vertices", group->names[igroup]);
 
   std::unordered_map<tagint, const VertexRecord *> by_tag;
