@@ -265,6 +265,14 @@ TEST(Contacts, BondBreaksAtThresholdStretch)
   auto above = two_cells(1.001 * r_star, 1, "bonds", "4242 beta 1.0e9 runs yes");
   EXPECT_EQ(above->thermo("f_break[1]"), 1.0);
   EXPECT_EQ(above->thermo("f_break[3]"), 0.0);
+  // the local output lists it: atoms 2 and 5, break step 1, stretch r/s, 1 = threshold
+  above->run("compute listed all reduce sum f_break[1] f_break[2] f_break[3] f_break[4] "
+             "f_break[5] inputs local\nthermo_style custom step c_listed[*]\nrun 0 post no");
+  EXPECT_EQ(above->thermo("c_listed[1]"), 2.0);
+  EXPECT_EQ(above->thermo("c_listed[2]"), 5.0);
+  EXPECT_EQ(above->thermo("c_listed[3]"), 1.0);
+  EXPECT_NEAR(above->thermo("c_listed[4]"), 1.001 * r_star / s, 1.0e-12);
+  EXPECT_EQ(above->thermo("c_listed[5]"), 1.0);
   above->run("run 0 post no");
   EXPECT_EQ(above->thermo("ebond"), 0.0) << "the broken bond must be gone";
 }
