@@ -16,8 +16,8 @@ class LammpsSession {
  public:
   explicit LammpsSession(MPI_Comm comm = MPI_COMM_WORLD)
   {
-    const char *args[] = {"mesophyll-test", "-log", "none", "-echo", "none", "-screen", "none",
-                          "-nocite"};
+    const char *args[] = {"mesophyll-test", "-log",    "none", "-echo",
+                          "none",           "-screen", "none", "-nocite"};
     handle = lammps_open(8, const_cast<char **>(args), comm, nullptr);
     if (!handle) throw std::runtime_error("could not create a LAMMPS instance");
   }
@@ -52,7 +52,8 @@ class LammpsSession {
   double equal_variable(const std::string &expression)
   {
     run("variable mesophyll_probe equal " + expression);
-    auto *value = static_cast<double *>(lammps_extract_variable(handle, "mesophyll_probe", nullptr));
+    auto *value =
+        static_cast<double *>(lammps_extract_variable(handle, "mesophyll_probe", nullptr));
     if (!value) {
       char buffer[2048] = "";
       lammps_get_last_error_message(handle, buffer, sizeof(buffer));

@@ -27,10 +27,11 @@ struct Model {
 std::string setup_commands(const std::string &data, const Model &m = Model())
 {
   return "units lj\ndimension 2\natom_style molecular\natom_modify map array\n"
-         "boundary p p p\nnewton on " + m.newton_bond + "\n" + VERTEX_STATE +
-      "bond_style dpoly/segment\nangle_style dpoly/bending\n" +
-      "read_data " + data + " fix Vertices NULL Vertices\n" +
-      "bond_coeff * " + std::to_string(m.eps_l) + "\n" + "angle_coeff * " + std::to_string(m.eps_b) + "\ncomm_modify cutoff 2.0\n" +
+         "boundary p p p\nnewton on " +
+      m.newton_bond + "\n" + VERTEX_STATE +
+      "bond_style dpoly/segment\nangle_style dpoly/bending\n" + "read_data " + data +
+      " fix Vertices NULL Vertices\n" + "bond_coeff * " + std::to_string(m.eps_l) + "\n" +
+      "angle_coeff * " + std::to_string(m.eps_b) + "\ncomm_modify cutoff 2.0\n" +
       "fix cells all dpoly/cells eps_a " + std::to_string(m.eps_a) + "\n" +
       "thermo_style custom step pe ebond eangle f_cells press pxx pyy pxy\n"
       "thermo_modify norm no\n";
@@ -122,10 +123,11 @@ TEST(CellMechanics, NewtonBondOffMatchesFiniteDifferences)
 TEST(CellMechanics, SingleMatchesCompute)
 {
   auto s = deformed_tissue();
-  s->run("compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
-         "compute esum all reduce sum c_segments inputs local\n"
-         "compute asum all reduce sum c_bends inputs local\n"
-         "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
+  s->run(
+      "compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
+      "compute esum all reduce sum c_segments inputs local\n"
+      "compute asum all reduce sum c_bends inputs local\n"
+      "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
   EXPECT_NEAR(s->thermo("c_esum"), s->thermo("ebond"), 1.0e-12 * s->thermo("ebond"));
   EXPECT_NEAR(s->thermo("c_asum"), s->thermo("eangle"), 1.0e-12 * s->thermo("eangle"));
 }
@@ -140,19 +142,12 @@ TEST(CellMechanics, PressureMatchesBoxDerivative)
 
   const double e = 1.0e-5;
   auto scale_energy = [&](double sx, double sy) {
-    char cmd[256];
-    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
-             sx, sy);
-    s->run(cmd);
-    const double u = s->thermo("pe");
-    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
-             1.0 / sx, 1.0 / sy);
-    s->run(cmd);
-    return u;
+    return energy_after_scaling(*s, sx, sy);
   };
 
   const double iso_up = scale_energy(1.0 + e, 1.0 + e), iso_down = scale_energy(1.0 - e, 1.0 - e);
-  const double area_up = lx * ly * (1.0 + e) * (1.0 + e), area_down = lx * ly * (1.0 - e) * (1.0 - e);
+  const double area_up = lx * ly * (1.0 + e) * (1.0 + e),
+               area_down = lx * ly * (1.0 - e) * (1.0 - e);
   const double p_numeric = -(iso_up - iso_down) / (area_up - area_down);
   EXPECT_NEAR(press, p_numeric, 1.0e-7 * std::fabs(press));
 
@@ -169,7 +164,8 @@ TEST(CellMechanics, NoNetForceOrTorque)
 {
   auto s = deformed_tissue();
   s->run("compute unwrapped all property/atom xu yu\n"
-         "variable torque atom c_unwrapped[1]*fy-c_unwrapped[2]*fx\ncompute net all reduce sum fx fy v_torque\n"
+         "variable torque atom c_unwrapped[1]*fy-c_unwrapped[2]*fx\ncompute net all reduce sum fx "
+         "fy v_torque\n"
          "thermo_style custom step pe c_net[*]\nrun 0 post no");
   const double scale = max_abs(s->gather("f", 3));
   EXPECT_NEAR(s->equal_variable("c_net[1]"), 0.0, 1.0e-12 * scale);
@@ -281,11 +277,12 @@ std::string square_data(const std::string &angles, int nangles = 4,
 {
   const std::string path = scratch("square.data");
   FILE *fp = fopen(path.c_str(), "w");
-  fprintf(fp, "square\n\n4 atoms\n1 atom types\n4 bonds\n1 bond types\n%d angles\n1 angle types\n\n"
-              "0 4 xlo xhi\n0 4 ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\nAtoms # molecular\n\n"
-              "1 1 1 1 1 0\n2 1 1 2 1 0\n3 1 1 2 2 0\n4 1 1 1 2 0\n\n"
-              "Bonds\n\n%s\nAngles\n\n%s\n"
-              "Vertices\n\n1 1 1 1.5708 1\n2 1 1 1.5708 1\n3 1 1 1.5708 1\n4 1 1 1.5708 1\n",
+  fprintf(fp,
+          "square\n\n4 atoms\n1 atom types\n4 bonds\n1 bond types\n%d angles\n1 angle types\n\n"
+          "0 4 xlo xhi\n0 4 ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\nAtoms # molecular\n\n"
+          "1 1 1 1 1 0\n2 1 1 2 1 0\n3 1 1 2 2 0\n4 1 1 1 2 0\n\n"
+          "Bonds\n\n%s\nAngles\n\n%s\n"
+          "Vertices\n\n1 1 1 1.5708 1\n2 1 1 1.5708 1\n3 1 1 1.5708 1\n4 1 1 1.5708 1\n",
           nangles, bonds.c_str(), angles.c_str());
   fclose(fp);
   return path;
@@ -323,8 +320,8 @@ TEST_F(BadInput, ThreeDimensions)
 
 TEST_F(BadInput, MissingVertexState)
 {
-  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES)) +
-                                   "unfix Vertices\nrun 0 post no");
+  const std::string msg =
+      error_of(setup_commands(square_data(CCW_ANGLES)) + "unfix Vertices\nrun 0 post no");
   EXPECT_NE(msg.find("needs the per-atom property d_sigma"), std::string::npos) << msg;
 }
 
@@ -358,8 +355,8 @@ TEST_F(BadInput, PreferredAreaDiffersWithinCell)
 
 TEST_F(BadInput, VertexWithTwoAngles)
 {
-  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES + std::string("5 1 1 2 4\n"), 5)) +
-                                   "run 0 post no");
+  const std::string msg = error_of(
+      setup_commands(square_data(CCW_ANGLES + std::string("5 1 1 2 4\n"), 5)) + "run 0 post no");
   EXPECT_NE(msg.find("vertex 2 is the centre of 2 angles"), std::string::npos) << msg;
 }
 
@@ -374,8 +371,8 @@ TEST_F(BadInput, RingThatDoesNotClose)
 
 TEST_F(BadInput, TwoVertexRing)
 {
-  const std::string msg = error_of(setup_commands(square_data(CCW_ANGLES)) +
-                                   "set atom 3*4 mol 2\nrun 0 post no");
+  const std::string msg =
+      error_of(setup_commands(square_data(CCW_ANGLES)) + "set atom 3*4 mol 2\nrun 0 post no");
   EXPECT_NE(msg.find("not a vertex of the same ring"), std::string::npos) << msg;
 }
 
@@ -389,16 +386,17 @@ TEST_F(BadInput, ClockwiseRing)
 
 TEST_F(BadInput, BondAcrossTheRing)
 {
-  const std::string msg = error_of(
-      setup_commands(square_data(CCW_ANGLES, 4, "1 1 1 2\n2 1 2 3\n3 1 3 4\n4 1 1 3\n")) +
-      "run 0 post no");
+  const std::string msg =
+      error_of(setup_commands(square_data(CCW_ANGLES, 4, "1 1 1 2\n2 1 2 3\n3 1 3 4\n4 1 1 3\n")) +
+               "run 0 post no");
   EXPECT_NE(msg.find("bond 1-3 is not a segment of a ring"), std::string::npos) << msg;
 }
 
 TEST_F(BadInput, BadCoefficientsAndKeywords)
 {
   const std::string base = setup_commands(square_data(CCW_ANGLES));
-  EXPECT_NE(error_of(base + "bond_coeff 1 -2").find("eps_l must be >= 0, got -2"), std::string::npos);
+  EXPECT_NE(error_of(base + "bond_coeff 1 -2").find("eps_l must be >= 0, got -2"),
+            std::string::npos);
   EXPECT_NE(error_of(base + "bond_coeff 1 1 2").find("takes one coefficient"), std::string::npos);
   EXPECT_NE(error_of(base + "angle_coeff 1 -0.1").find("eps_b must be >= 0, got -0.1"),
             std::string::npos);
@@ -415,8 +413,10 @@ TEST_F(BadInput, BadCoefficientsAndKeywords)
 TEST_F(BadInput, BoxRelaxNeedsLineSearchAndPeriodicBox)
 {
   const std::string base = setup_commands(square_data(CCW_ANGLES));
-  std::string msg = error_of(base + "fix relax all box/relax iso 0.001\nmin_style fire\nminimize 0 1e-8 10 10");
-  EXPECT_NE(msg.find("Cannot use a damped dynamics min style with fix box/relax"), std::string::npos)
+  std::string msg =
+      error_of(base + "fix relax all box/relax iso 0.001\nmin_style fire\nminimize 0 1e-8 10 10");
+  EXPECT_NE(msg.find("Cannot use a damped dynamics min style with fix box/relax"),
+            std::string::npos)
       << msg;
   std::string fixed = base + "fix relax all box/relax iso 0.001\nminimize 0 1e-8 10 10";
   fixed.replace(fixed.find("boundary p p p"), 14, "boundary f p p");

@@ -61,11 +61,13 @@ std::string write_tissue(const Tissue &t, const std::string &name)
   }
   std::ofstream out(path);
   out.precision(17);
-  out << "tissue\n\n" << atoms.size() << " atoms\n1 atom types\n"
-      << segments.size() + t.adhesive.size() << " bonds\n2 bond types\n" << angles.size()
-      << " angles\n1 angle types\n\n0 " << t.box << " xlo xhi\n0 " << t.box
+  out << "tissue\n\n"
+      << atoms.size() << " atoms\n1 atom types\n"
+      << segments.size() + t.adhesive.size() << " bonds\n2 bond types\n"
+      << angles.size() << " angles\n1 angle types\n\n0 " << t.box << " xlo xhi\n0 " << t.box
       << " ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\nAtoms # molecular\n\n";
-  for (const auto &a : atoms) out << (int) a[0] << " " << (int) a[1] << " 1 " << a[2] << " " << a[3] << " 0\n";
+  for (const auto &a : atoms)
+    out << (int) a[0] << " " << (int) a[1] << " 1 " << a[2] << " " << a[3] << " 0\n";
   out << "\nBonds\n\n";
   int id = 1;
   for (const auto &s : segments) out << id++ << " 1 " << s.first << " " << s.second << "\n";
@@ -97,24 +99,31 @@ std::string contact_commands(const std::string &data, const Contacts &c = Contac
   std::string cmds = "units lj\ndimension 2\natom_style molecular\natom_modify map array\n"
                      "boundary p p p\n"
                      "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
-                     "bond_style hybrid dpoly/segment mesophyll/adhesion z " + c.z_rule + "\n"
-                     "angle_style dpoly/bending\n"
-                     "read_data " + data + " fix Vertices NULL Vertices extra/bond/per/atom 6 "
-                     "extra/special/per/atom 40\n"
-                     "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
-                     "angle_coeff * 0.4\npair_style dpoly/contact self " + c.self + "\n"
-                     "pair_coeff * * 1.0\nspecial_bonds lj 1.0 1.0 1.0\ncomm_modify cutoff 3.0\n"
-                     "fix cells all dpoly/cells eps_a 1.0\n";
+                     "bond_style hybrid dpoly/segment mesophyll/adhesion z " +
+      c.z_rule +
+      "\n"
+      "angle_style dpoly/bending\n"
+      "read_data " +
+      data +
+      " fix Vertices NULL Vertices extra/bond/per/atom 6 "
+      "extra/special/per/atom 40\n"
+      "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
+      "angle_coeff * 0.4\npair_style dpoly/contact self " +
+      c.self +
+      "\n"
+      "pair_coeff * * 1.0\nspecial_bonds lj 1.0 1.0 1.0\ncomm_modify cutoff 3.0\n"
+      "fix cells all dpoly/cells eps_a 1.0\n";
   if (!c.break_options.empty()) cmds += "fix break all mesophyll/break " + c.break_options + "\n";
-  return cmds + "thermo_style custom step pe ebond eangle epair f_cells press pxx pyy\n"
-                "thermo_modify norm no\n";
+  return cmds +
+      "thermo_style custom step pe ebond eangle epair f_cells press pxx pyy\n"
+      "thermo_modify norm no\n";
 }
 
 // The nine-cell tissue of the tests' data, overlapping, bonded, then opened a little so that
 // some bonds are stretched and others still overlap.
-std::unique_ptr<LammpsSession> adhesive_tissue(const Contacts &c = Contacts(),
-                                               MPI_Comm comm = MPI_COMM_WORLD,
-                                               const std::string &data = data_file("overlapping.data"))
+std::unique_ptr<LammpsSession>
+adhesive_tissue(const Contacts &c = Contacts(), MPI_Comm comm = MPI_COMM_WORLD,
+                const std::string &data = data_file("overlapping.data"))
 {
   auto s = std::make_unique<LammpsSession>(comm);
   s->run(contact_commands(data, c));
@@ -163,7 +172,8 @@ TEST(Contacts, AdhesiveTissueForcesMatchFiniteDifferences)
 TEST(Contacts, SelfRepulsionMatchesFiniteDifferences)
 {
   auto s = std::make_unique<LammpsSession>();
-  s->run(contact_commands(data_file("single_contacts.data")) + "change_box all x scale 0.3 remap\n"
+  s->run(contact_commands(data_file("single_contacts.data")) +
+         "change_box all x scale 0.3 remap\n"
          "run 0 post no");
   const double with_self = s->thermo("epair");
   ASSERT_GT(with_self, 1.0e-6) << "the squashed ring should touch itself";
@@ -182,15 +192,7 @@ TEST(Contacts, PressureMatchesBoxDerivative)
   const double area = s->equal_variable("lx*ly");
   const double e = 1.0e-5;
   auto energy = [&](double scale) {
-    char cmd[256];
-    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
-             scale, scale);
-    s->run(cmd);
-    const double u = s->thermo("pe");
-    snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
-             1.0 / scale, 1.0 / scale);
-    s->run(cmd);
-    return u;
+    return energy_after_scaling(*s, scale, scale);
   };
   const double numeric =
       -(energy(1.0 + e) - energy(1.0 - e)) / (area * ((1 + e) * (1 + e) - (1 - e) * (1 - e)));
@@ -342,7 +344,8 @@ TEST(Breaking, JunctionInteriorBondsNeedTheEdgeRuleOff)
   const std::string data = write_tissue(t, "junction.data");
   for (const char *edges : {"yes", "no"}) {
     LammpsSession s;
-    s.run(contact_commands(data, {"bonds", "yes", std::string("555 beta 1.0e-3 runs yes edges ") + edges}) +
+    s.run(contact_commands(
+              data, {"bonds", "yes", std::string("555 beta 1.0e-3 runs yes edges ") + edges}) +
           "run 0 post no");
     EXPECT_EQ(s.thermo("f_break[2]"), std::string(edges) == "yes" ? 0.0 : 1.0) << "edges " << edges;
   }
@@ -406,7 +409,8 @@ TEST(Breaking, RestartGivesTheSameLaterBreaks)
   auto first = pulled_tissue(MPI_COMM_WORLD, data_file("overlapping.data"), 2);
   first->run("write_restart " + restart);
   LammpsSession second;
-  second.run("read_restart " + restart + "\n"
+  second.run("read_restart " + restart +
+             "\n"
              "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
              "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
              "comm_modify cutoff 3.0\nfix cells all dpoly/cells eps_a 1.0\n"
@@ -440,7 +444,8 @@ TEST_F(BadContacts, Settings)
   const std::string data = data_file("overlapping.data");
   std::string cmds = contact_commands(data);
   cmds.replace(cmds.find("z bonds"), 7, "z neighbours");
-  EXPECT_NE(error_of(cmds).find("z must be 'bonds' or 'cells', got 'neighbours'"), std::string::npos);
+  EXPECT_NE(error_of(cmds).find("z must be 'bonds' or 'cells', got 'neighbours'"),
+            std::string::npos);
   const std::string base = contact_commands(data);
   EXPECT_NE(error_of(base + "fix b all mesophyll/break 5 beta 0").find("beta must be > 0, got 0"),
             std::string::npos);
@@ -450,9 +455,11 @@ TEST_F(BadContacts, Settings)
             std::string::npos);
   EXPECT_NE(error_of(base + "fix b all mesophyll/break 5 gamma 2").find("keyword: gamma"),
             std::string::npos);
-  EXPECT_NE(error_of(base + "pair_coeff * * -1").find("eps_c must be >= 0, got -1"), std::string::npos);
-  EXPECT_NE(error_of(base + "bond_coeff 2 mesophyll/adhesion -1").find("eps_c must be >= 0, got -1"),
+  EXPECT_NE(error_of(base + "pair_coeff * * -1").find("eps_c must be >= 0, got -1"),
             std::string::npos);
+  EXPECT_NE(
+      error_of(base + "bond_coeff 2 mesophyll/adhesion -1").find("eps_c must be >= 0, got -1"),
+      std::string::npos);
 }
 
 TEST_F(BadContacts, AdhesiveBondInsideOneCell)
@@ -460,7 +467,8 @@ TEST_F(BadContacts, AdhesiveBondInsideOneCell)
   Tissue t;
   t.cells = {square(10.0, 10.0, 1.0)};
   t.adhesive = {{1, 3}};
-  const std::string msg = error_of(contact_commands(write_tissue(t, "inside.data")) + "run 0 post no");
+  const std::string msg =
+      error_of(contact_commands(write_tissue(t, "inside.data")) + "run 0 post no");
   EXPECT_NE(msg.find("bond 1-3 joins two vertices of cell 1"), std::string::npos) << msg;
 }
 
@@ -480,24 +488,28 @@ TEST_F(BadContacts, AdhereCellsRefusesNonsense)
             std::string::npos);
   std::string tight = overlapping;
   tight.replace(tight.find("extra/bond/per/atom 6"), 21, "extra/bond/per/atom 0");
-  EXPECT_NE(error_of(tight + "adhere_cells all 2").find("add 'extra/bond/per/atom"), std::string::npos);
+  EXPECT_NE(error_of(tight + "adhere_cells all 2").find("add 'extra/bond/per/atom"),
+            std::string::npos);
 }
 
 TEST_F(BadContacts, OverlapsMustNotHideBehindSpecialBonds)
 {
   const std::string msg = error_of(contact_commands(data_file("overlapping.data")) +
                                    "special_bonds lj 0.0 1.0 1.0\nrun 0 post no");
-  EXPECT_NE(msg.find("needs special_bonds lj 1.0 1.0 1.0 (1-2 weight is 0)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("needs special_bonds lj 1.0 1.0 1.0 (1-2 weight is 0)"), std::string::npos)
+      << msg;
 }
 
 TEST_F(BadContacts, BreakingNeedsTheAdhesionStyle)
 {
-  const std::string msg = error_of(
-      "units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
-      "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
-      "bond_style dpoly/segment\nangle_style dpoly/bending\n"
-      "read_data " + data_file("single.data") + " fix Vertices NULL Vertices\n"
-      "bond_coeff * 1\nangle_coeff * 1\nfix cells all dpoly/cells\n"
-      "fix b all mesophyll/break 7\nrun 0 post no");
+  const std::string msg =
+      error_of("units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
+               "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+               "bond_style dpoly/segment\nangle_style dpoly/bending\n"
+               "read_data " +
+               data_file("single.data") +
+               " fix Vertices NULL Vertices\n"
+               "bond_coeff * 1\nangle_coeff * 1\nfix cells all dpoly/cells\n"
+               "fix b all mesophyll/break 7\nrun 0 post no");
   EXPECT_NE(msg.find("needs bond_style mesophyll/adhesion"), std::string::npos) << msg;
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -66,6 +67,20 @@ inline double potential_energy_at(LammpsSession &s, std::vector<double> x)
   return s.thermo("pe");
 }
 
+// Potential energy with the box (and the atoms) scaled by sx, sy; the box is restored after.
+inline double energy_after_scaling(LammpsSession &s, double sx, double sy)
+{
+  char cmd[256];
+  snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no", sx,
+           sy);
+  s.run(cmd);
+  const double u = s.thermo("pe");
+  snprintf(cmd, sizeof(cmd), "change_box all x scale %.17g y scale %.17g remap\nrun 0 post no",
+           1.0 / sx, 1.0 / sy);
+  s.run(cmd);
+  return u;
+}
+
 // Largest deviation of the forces from central differences of the total energy, relative to
 // the largest force: every force term at once, in whatever state the session is.
 inline double finite_difference_error(LammpsSession &s)
@@ -92,7 +107,6 @@ inline double finite_difference_error(LammpsSession &s)
   s.run("run 0 post no");
   return relative_force_error(f, numeric);
 }
-
 
 }    // namespace test
 

@@ -25,7 +25,8 @@ using namespace LAMMPS_NS;
 
 void AdhereCells::command(int narg, char **arg)
 {
-  if (domain->box_exist == 0) error->all(FLERR, "adhere_cells before the simulation box is defined");
+  if (domain->box_exist == 0)
+    error->all(FLERR, "adhere_cells before the simulation box is defined");
   if (narg != 2) error->all(FLERR, "adhere_cells takes 2 arguments (group-ID btype), got {}", narg);
   if (!atom->molecule_flag || !atom->avec->bonds_allow)
     error->all(FLERR, "adhere_cells needs an atom style with molecule IDs and bonds");
@@ -34,14 +35,18 @@ void AdhereCells::command(int narg, char **arg)
   const int groupbit = group->bitmask[igroup];
   const int btype = utils::inumeric(FLERR, arg[1], false, lmp);
   if (btype < 1 || btype > atom->nbondtypes)
-    error->all(FLERR, "adhere_cells: bond type {} is not between 1 and {}", btype, atom->nbondtypes);
+    error->all(FLERR, "adhere_cells: bond type {} is not between 1 and {}", btype,
+               atom->nbondtypes);
   auto *adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
   if (!adhesion || !adhesion->is_adhesive_type(btype))
-    error->all(FLERR, "adhere_cells: bond type {} is not a bond type of bond_style "
-                      "mesophyll/adhesion (set its bond_coeff first)", btype);
+    error->all(FLERR,
+               "adhere_cells: bond type {} is not a bond type of bond_style "
+               "mesophyll/adhesion (set its bond_coeff first)",
+               btype);
   if (!force->pair_match("^dpoly/contact", 0))
-    error->all(FLERR, "adhere_cells needs pair_style dpoly/contact, whose cutoff covers every "
-                      "contact distance");
+    error->all(FLERR,
+               "adhere_cells needs pair_style dpoly/contact, whose cutoff covers every "
+               "contact distance");
 
   // a full neighbor list of the contact pair style's range, built once, as create_bonds does
   neighbor->add_request(this, "adhere_cells", NeighConst::REQ_FULL);
@@ -100,9 +105,10 @@ void AdhereCells::command(int narg, char **arg)
     needed_local = std::max(needed_local, atom->num_bond[i] + (int) partners[i].size());
   MPI_Allreduce(&needed_local, &needed, 1, MPI_INT, MPI_MAX, world);
   if (needed > atom->bond_per_atom)
-    error->all(FLERR, "adhere_cells needs room for {} bonds on one atom, but only {} were "
-                      "reserved: add 'extra/bond/per/atom {}' to read_data", needed,
-               atom->bond_per_atom, needed - atom->bond_per_atom);
+    error->all(FLERR,
+               "adhere_cells needs room for {} bonds on one atom, but only {} were "
+               "reserved: add 'extra/bond/per/atom {}' to read_data",
+               needed, atom->bond_per_atom, needed - atom->bond_per_atom);
 
   for (int i = 0; i < atom->nlocal; i++)
     for (tagint partner : partners[i]) {

@@ -120,7 +120,8 @@ void AngleDPolyBending::coeff(int narg, char **arg)
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
   const double eps_b = utils::numeric(FLERR, arg[1], false, lmp);
-  if (eps_b < 0.0) error->all(FLERR, "Angle style dpoly/bending eps_b must be >= 0, got {}", arg[1]);
+  if (eps_b < 0.0)
+    error->all(FLERR, "Angle style dpoly/bending eps_b must be >= 0, got {}", arg[1]);
 
   for (int i = ilo; i <= ihi; i++) {
     stiffness[i] = eps_b;

@@ -33,8 +33,8 @@ class AngleDPolyBending : public Angle {
   void *extract(const char *, int &) override;
 
  protected:
-  double *stiffness;              // eps_b per angle type
-  double mean_interior_angle;     // pi - <theta0> when the run started, for equilibrium_angle()
+  double *stiffness;             // eps_b per angle type
+  double mean_interior_angle;    // pi - <theta0> when the run started, for equilibrium_angle()
   void allocate();
 };
 

@@ -63,11 +63,15 @@ double BondDPolySegment::preferred_length(const DPoly::VertexState &state, int i
   const int owned = (i < atom->nlocal) ? i : j;
   const int centred = DPoly::ring_links(atom, owned).count;
   if (centred != 1)
-    error->one(FLERR, "Bond style dpoly/segment: vertex {} is the centre of {} angles; a ring "
-                      "vertex needs exactly one angle (prev, vertex, next)", atom->tag[owned], centred);
-  error->one(FLERR, "Bond style dpoly/segment: bond {}-{} is not a segment of a ring: its atoms "
-                      "must be consecutive vertices (prev, vertex, next) of the angle centred on "
-                      "one of them", atom->tag[i], atom->tag[j]);
+    error->one(FLERR,
+               "Bond style dpoly/segment: vertex {} is the centre of {} angles; a ring "
+               "vertex needs exactly one angle (prev, vertex, next)",
+               atom->tag[owned], centred);
+  error->one(FLERR,
+             "Bond style dpoly/segment: bond {}-{} is not a segment of a ring: its atoms "
+             "must be consecutive vertices (prev, vertex, next) of the angle centred on "
+             "one of them",
+             atom->tag[i], atom->tag[j]);
   return -1.0;
 }
 

@@ -34,8 +34,8 @@ class BondDPolySegment : public Bond {
   void *extract(const char *, int &) override;
 
  protected:
-  double *stiffness;              // eps_l per bond type
-  double longest_preferred;       // largest l0 when the run started, for equilibrium_distance()
+  double *stiffness;           // eps_l per bond type
+  double longest_preferred;    // largest l0 when the run started, for equilibrium_distance()
   void allocate();
   double preferred_length(const DPoly::VertexState &state, int i, int j);
 };

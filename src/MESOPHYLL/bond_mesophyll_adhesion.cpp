@@ -14,13 +14,12 @@
 #include "fix_dpoly_cells.h"
 #include "force.h"
 #include "memory.h"
-#include "modify.h"
 #include "neighbor.h"
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <cstring>
+#include <utility>
 
 using namespace LAMMPS_NS;
 using DPoly::AdhesiveBond;
@@ -70,11 +69,7 @@ void BondMesophyllAdhesion::settings(int narg, char **arg)
 
 void BondMesophyllAdhesion::init_style()
 {
-  auto fixes = modify->get_fix_by_style("^dpoly/cells$");
-  if (fixes.empty())
-    error->all(FLERR, "Bond style mesophyll/adhesion needs fix dpoly/cells, which counts the "
-                      "contacts of each cell");
-  cells = dynamic_cast<FixDPolyCells *>(fixes.front());
+  cells = FixDPolyCells::find(lmp, "Bond style mesophyll/adhesion");
   DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
 }
 
@@ -91,7 +86,8 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const DPoly::VertexState state =
+      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
   double **x = atom->x;
   double **f = atom->f;
   tagint *molecule = atom->molecule;
@@ -105,9 +101,10 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
     const int i2 = bondlist[n][1];
     const int type = bondlist[n][2];
     if (molecule[i1] == molecule[i2])
-      error->one(FLERR, "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
-                        "adhesive bonds join different cells", atom->tag[i1], atom->tag[i2],
-                 molecule[i1]);
+      error->one(FLERR,
+                 "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
+                 "adhesive bonds join different cells",
+                 atom->tag[i1], atom->tag[i2], molecule[i1]);
 
     const double delx = x[i1][0] - x[i2][0];
     const double dely = x[i1][1] - x[i2][1];
@@ -137,7 +134,8 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
 
 std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
 {
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const DPoly::VertexState state =
+      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
   double **x = atom->x;
   tagint *tag = atom->tag;
   std::vector<AdhesiveBond> mine;
@@ -149,11 +147,18 @@ std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
       if (!force->newton_bond && partner < tag[i]) continue;    // stored twice: count once
       const int j = domain->closest_image(i, atom->map(partner));
       if (j < 0)
-        error->one(FLERR, "Bond style mesophyll/adhesion: atom {} of bond {}-{} is missing on "
-                          "this rank; increase the communication cutoff", partner, tag[i], partner);
+        error->one(FLERR,
+                   "Bond style mesophyll/adhesion: atom {} of bond {}-{} is missing on "
+                   "this rank; increase the communication cutoff",
+                   partner, tag[i], partner);
       const double r = sqrt((x[i][0] - x[j][0]) * (x[i][0] - x[j][0]) +
                             (x[i][1] - x[j][1]) * (x[i][1] - x[j][1]));
-      AdhesiveBond b{std::min(tag[i], partner), std::max(tag[i], partner), 0, 0, type, r,
+      AdhesiveBond b{std::min(tag[i], partner),
+                     std::max(tag[i], partner),
+                     0,
+                     0,
+                     type,
+                     r,
                      0.5 * (state.diameter[i] + state.diameter[j])};
       b.cell1 = (tag[i] < partner) ? atom->molecule[i] : atom->molecule[j];
       b.cell2 = (tag[i] < partner) ? atom->molecule[j] : atom->molecule[i];
@@ -165,8 +170,10 @@ std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
   std::sort(all.begin(), all.end());
   for (const auto &b : all)
     if (b.cell1 == b.cell2)
-      error->all(FLERR, "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
-                        "adhesive bonds join different cells", b.atom1, b.atom2, b.cell1);
+      error->all(FLERR,
+                 "Bond style mesophyll/adhesion: bond {}-{} joins two vertices of cell {}; "
+                 "adhesive bonds join different cells",
+                 b.atom1, b.atom2, b.cell1);
   return all;
 }
 
@@ -206,7 +213,8 @@ void BondMesophyllAdhesion::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   if (comm->me == 0) {
-    utils::sfread(FLERR, &contact_stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr, error);
+    utils::sfread(FLERR, &contact_stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr,
+                  error);
     utils::sfread(FLERR, &setflag[1], sizeof(int), atom->nbondtypes, fp, nullptr, error);
   }
   MPI_Bcast(&contact_stiffness[1], atom->nbondtypes, MPI_DOUBLE, 0, world);
@@ -235,7 +243,8 @@ void BondMesophyllAdhesion::write_data(FILE *fp)
 
 double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double &fforce)
 {
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const DPoly::VertexState state =
+      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
   const double r = sqrt(rsq);
   const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
   fforce = 0.0;

@@ -6,13 +6,12 @@
 #include "compute_dpoly_adhesion.h"
 
 #include "atom.h"
-
-#include <algorithm>
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "memory.h"
-#include "modify.h"
 #include "update.h"
+
+#include <algorithm>
 
 using namespace LAMMPS_NS;
 
@@ -37,9 +36,7 @@ ComputeDPolyAdhesion::~ComputeDPolyAdhesion()
 
 void ComputeDPolyAdhesion::init()
 {
-  auto hubs = modify->get_fix_by_style("^dpoly/cells$");
-  if (hubs.empty()) error->all(FLERR, "Compute dpoly/adhesion needs fix dpoly/cells");
-  cells = dynamic_cast<FixDPolyCells *>(hubs.front());
+  cells = FixDPolyCells::find(lmp, "Compute dpoly/adhesion");
 }
 
 void ComputeDPolyAdhesion::compute_array()

@@ -19,10 +19,10 @@ namespace LAMMPS_NS {
 namespace DPoly {
 
   struct AdhesiveBond {
-    tagint atom1, atom2;          // atom1 < atom2
-    tagint cell1, cell2;          // their molecule IDs
+    tagint atom1, atom2;    // atom1 < atom2
+    tagint cell1, cell2;    // their molecule IDs
     int type;
-    double distance, contact;     // r and s = (sigma1 + sigma2)/2 when gathered
+    double distance, contact;    // r and s = (sigma1 + sigma2)/2 when gathered
     bool operator<(const AdhesiveBond &o) const
     {
       return atom1 < o.atom1 || (atom1 == o.atom1 && atom2 < o.atom2);

@@ -34,10 +34,10 @@ namespace DPoly {
 
   // Pointers to the per-vertex state arrays; fetch again after atoms migrate or arrays grow.
   struct VertexState {
-    double *diameter;             // sigma: contact diameter of the vertex disk
-    double *preferred_length;     // l0 of the segment from this vertex to the next one
-    double *preferred_angle;      // theta0: preferred signed turning angle at this vertex
-    double *preferred_area;       // a0 of the vertex's cell (the same on all its vertices)
+    double *diameter;            // sigma: contact diameter of the vertex disk
+    double *preferred_length;    // l0 of the segment from this vertex to the next one
+    double *preferred_angle;     // theta0: preferred signed turning angle at this vertex
+    double *preferred_area;      // a0 of the vertex's cell (the same on all its vertices)
   };
   VertexState vertex_state(Atom *atom, Error *error, const char *style);
 

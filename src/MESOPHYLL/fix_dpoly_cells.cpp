@@ -19,8 +19,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <cstring>
+#include <utility>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -64,6 +64,15 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
 }
 
+FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const char *who)
+{
+  auto hubs = lmp->modify->get_fix_by_style("^dpoly/cells$");
+  if (hubs.empty())
+    lmp->error->all(FLERR, "{} needs fix dpoly/cells, which keeps the cells and their contacts",
+                    who);
+  return dynamic_cast<FixDPolyCells *>(hubs.front());
+}
+
 int FixDPolyCells::setmask()
 {
   return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE;
@@ -75,17 +84,21 @@ void FixDPolyCells::init()
     error->all(FLERR, "Fix dpoly/cells needs a 2d simulation (dimension 2), got dimension {}",
                domain->dimension);
   if (!atom->molecule_flag)
-    error->all(FLERR, "Fix dpoly/cells needs molecule IDs (e.g. atom_style molecular): "
-                      "each cell is a molecule");
+    error->all(FLERR,
+               "Fix dpoly/cells needs molecule IDs (e.g. atom_style molecular): "
+               "each cell is a molecule");
   if (!atom->avec->angles_allow)
-    error->all(FLERR, "Fix dpoly/cells needs angles: each vertex is the centre of one angle "
-                      "(prev, vertex, next) that gives the ring order");
+    error->all(FLERR,
+               "Fix dpoly/cells needs angles: each vertex is the centre of one angle "
+               "(prev, vertex, next) that gives the ring order");
   DPoly::vertex_state(atom, error, "Fix dpoly/cells");
   if (modify->get_fix_by_style("^dpoly/cells$").size() > 1)
     error->all(FLERR, "Only one fix dpoly/cells may be defined");
   if (!thermo_energy || !thermo_virial)
-    error->all(FLERR, "Fix dpoly/cells {}: the area term must count in both energy and virial; "
-                      "do not use fix_modify energy no or virial no with it", id);
+    error->all(FLERR,
+               "Fix dpoly/cells {}: the area term must count in both energy and virial; "
+               "do not use fix_modify energy no or virial no with it",
+               id);
 }
 
 // before the first force evaluation of a run, so that every style sees current cells
@@ -128,8 +141,10 @@ void FixDPolyCells::refresh_cells()
   measure_cells();
   for (int c = 0; c < ncells(); c++)
     if (areas[c] <= 0.0)
-      error->all(FLERR, "Fix dpoly/cells: cell {} has area {:.8g} <= 0; a ring must run "
-                        "counter-clockwise and must not be inverted", cell_ids[c], areas[c]);
+      error->all(FLERR,
+                 "Fix dpoly/cells: cell {} has area {:.8g} <= 0; a ring must run "
+                 "counter-clockwise and must not be inverted",
+                 cell_ids[c], areas[c]);
 }
 
 void FixDPolyCells::gather_rings()
@@ -145,18 +160,24 @@ void FixDPolyCells::gather_rings()
 
   // the whole ring table on every rank, so every rank reaches the same verdict
   std::vector<VertexRecord> all = DPoly::gather_on_all_ranks(std::move(mine), world);
-  if (all.empty()) error->all(FLERR, "Fix dpoly/cells: group {} holds no vertices", group->names[igroup]);
+  if (all.empty())
+    error->all(FLERR, "Fix dpoly/cells: group {} holds no vertices", group->names[igroup]);
 
   std::unordered_map<tagint, const VertexRecord *> by_tag;
   for (const auto &v : all) {
     if (v.centred_angles != 1)
-      error->all(FLERR, "Fix dpoly/cells: vertex {} is the centre of {} angles; a ring vertex "
-                        "needs exactly one angle (prev, vertex, next)", v.tag, v.centred_angles);
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} is the centre of {} angles; a ring vertex "
+                 "needs exactly one angle (prev, vertex, next)",
+                 v.tag, v.centred_angles);
     if (v.molecule <= 0)
-      error->all(FLERR, "Fix dpoly/cells: vertex {} has molecule ID {}; each cell must be a "
-                        "molecule with ID > 0", v.tag, v.molecule);
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} has molecule ID {}; each cell must be a "
+                 "molecule with ID > 0",
+                 v.tag, v.molecule);
     if (!(v.diameter > 0.0))
-      error->all(FLERR, "Fix dpoly/cells: vertex {} has sigma = {}; it must be > 0", v.tag, v.diameter);
+      error->all(FLERR, "Fix dpoly/cells: vertex {} has sigma = {}; it must be > 0", v.tag,
+                 v.diameter);
     if (!(v.preferred_length > 0.0))
       error->all(FLERR, "Fix dpoly/cells: vertex {} has l0 = {}; it must be > 0", v.tag,
                  v.preferred_length);
@@ -170,8 +191,9 @@ void FixDPolyCells::gather_rings()
   for (const auto &v : all) {
     const auto next = by_tag.find(v.next);
     if (next == by_tag.end() || next->second->molecule != v.molecule || next->second->prev != v.tag)
-      error->all(FLERR, "Fix dpoly/cells: vertex {} of cell {} points to vertex {} as its next, "
-                        "but that is not a vertex of the same ring pointing back to it",
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} of cell {} points to vertex {} as its next, "
+                 "but that is not a vertex of the same ring pointing back to it",
                  v.tag, v.molecule, v.next);
     members[v.molecule].push_back(&v);
   }
@@ -196,15 +218,17 @@ void FixDPolyCells::gather_rings()
     const VertexRecord *v = start;
     do {
       if (v->preferred_area != start->preferred_area)
-        error->all(FLERR, "Fix dpoly/cells: cell {} has different a0 on vertices {} ({}) and {} ({})",
+        error->all(FLERR,
+                   "Fix dpoly/cells: cell {} has different a0 on vertices {} ({}) and {} ({})",
                    cell_ids[c], start->tag, start->preferred_area, v->tag, v->preferred_area);
       v = by_tag[v->next];
       steps++;
     } while (v != start && steps <= count);
     if (steps != count)
-      error->all(FLERR, "Fix dpoly/cells: cell {} is not one closed ring: following the ring "
-                        "from vertex {} returns after {} of its {} vertices", cell_ids[c],
-                 start->tag, steps, count);
+      error->all(FLERR,
+                 "Fix dpoly/cells: cell {} is not one closed ring: following the ring "
+                 "from vertex {} returns after {} of its {} vertices",
+                 cell_ids[c], start->tag, steps, count);
     vertex_counts[c] = count;
     preferred_areas[c] = start->preferred_area;
   }
@@ -271,10 +295,12 @@ void FixDPolyCells::check_ring_images()
   tagint any_broken;
   MPI_Allreduce(&broken, &any_broken, 1, MPI_LMP_TAGINT, MPI_MAX, world);
   if (any_broken)
-    error->all(FLERR, "Fix dpoly/cells: the ring is not whole between vertex {} and its next "
-                      "vertex: give the ring consistent image flags, keep its segments shorter "
-                      "than half the box, and make sure the next vertex is within the "
-                      "communication cutoff", any_broken);
+    error->all(FLERR,
+               "Fix dpoly/cells: the ring is not whole between vertex {} and its next "
+               "vertex: give the ring consistent image flags, keep its segments shorter "
+               "than half the box, and make sure the next vertex is within the "
+               "communication cutoff",
+               any_broken);
 }
 
 int FixDPolyCells::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
@@ -310,12 +336,16 @@ void FixDPolyCells::measure_cells()
     const int jp = domain->closest_image(i, atom->map(links.prev));
     const int jn = domain->closest_image(i, atom->map(links.next));
     if (jp < 0 || jn < 0)
-      error->one(FLERR, "Fix dpoly/cells: a ring neighbour of vertex {} is missing on this rank; "
-                        "increase the communication cutoff (comm_modify cutoff)", atom->tag[i]);
+      error->one(FLERR,
+                 "Fix dpoly/cells: a ring neighbour of vertex {} is missing on this rank; "
+                 "increase the communication cutoff (comm_modify cutoff)",
+                 atom->tag[i]);
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
-      error->one(FLERR, "Fix dpoly/cells: vertex {} belongs to molecule {}, which was not a cell "
-                        "when the run started", atom->tag[i], atom->molecule[i]);
+      error->one(FLERR,
+                 "Fix dpoly/cells: vertex {} belongs to molecule {}, which was not a cell "
+                 "when the run started",
+                 atom->tag[i], atom->molecule[i]);
     double *dp = &to_prev[2 * i], *dn = &to_next[2 * i];
     dp[0] = x[i][0] - x[jp][0];
     dp[1] = x[i][1] - x[jp][1];
@@ -379,7 +409,9 @@ double FixDPolyCells::compute_vector(int n)
     for (double a : areas) total += a;
     return total;
   }
-  return (double) std::count_if(areas.begin(), areas.end(), [](double a) { return a <= 0.0; });
+  return (double) std::count_if(areas.begin(), areas.end(), [](double a) {
+    return a <= 0.0;
+  });
 }
 
 double FixDPolyCells::memory_usage()

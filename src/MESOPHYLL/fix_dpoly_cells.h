@@ -43,6 +43,9 @@ class FixDPolyCells : public Fix {
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
+  // The hub of this LAMMPS instance, for the companion styles; an error names 'who' if none.
+  static FixDPolyCells *find(class LAMMPS *lmp, const char *who);
+
   // Per-cell values, identical on every rank, current after the last force evaluation.
   int ncells() const { return (int) cell_ids.size(); }
   tagint cell_id(int cell) const { return cell_ids[cell]; }
@@ -72,8 +75,8 @@ class FixDPolyCells : public Fix {
   double area_stiffness;    // eps_a
   double area_energy;
 
-  std::vector<tagint> cell_ids;    // sorted molecule IDs of the cells
-  std::vector<int> dense_index;    // molecule ID -> cell, when IDs are dense
+  std::vector<tagint> cell_ids;                    // sorted molecule IDs of the cells
+  std::vector<int> dense_index;                    // molecule ID -> cell, when IDs are dense
   std::unordered_map<tagint, int> sparse_index;    // otherwise
   std::unordered_map<tagint, RingNeighbours> rings;
   DPoly::AdhesionCounts adhesion_counts;

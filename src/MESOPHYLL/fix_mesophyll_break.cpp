@@ -13,7 +13,6 @@
 #include "fix_dpoly_cells.h"
 #include "force.h"
 #include "memory.h"
-#include "modify.h"
 #include "special.h"
 #include "update.h"
 
@@ -39,15 +38,19 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
   if (seed <= 0) error->all(FLERR, "Fix mesophyll/break seed must be > 0, got {}", arg[3]);
   int iarg = 4;
   while (iarg < narg) {
-    if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, std::string("fix mesophyll/break ") + arg[iarg], error);
+    if (iarg + 2 > narg)
+      utils::missing_cmd_args(FLERR, std::string("fix mesophyll/break ") + arg[iarg], error);
     if (strcmp(arg[iarg], "beta") == 0) {
       beta = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (beta <= 0.0) error->all(FLERR, "Fix mesophyll/break beta must be > 0, got {}", arg[iarg + 1]);
+      if (beta <= 0.0)
+        error->all(FLERR, "Fix mesophyll/break beta must be > 0, got {}", arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "threshold") == 0) {
       threshold = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (threshold <= 1.0)
-        error->all(FLERR, "Fix mesophyll/break threshold (breaking stretch r*/s) must be > 1, "
-                          "got {}", arg[iarg + 1]);
+        error->all(FLERR,
+                   "Fix mesophyll/break threshold (breaking stretch r*/s) must be > 1, "
+                   "got {}",
+                   arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "edges") == 0) {
       edges_only = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else if (strcmp(arg[iarg], "runs") == 0) {
@@ -82,10 +85,9 @@ void FixMesophyllBreak::init()
 {
   adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
   if (!adhesion)
-    error->all(FLERR, "Fix mesophyll/break needs bond_style mesophyll/adhesion (alone or in hybrid)");
-  auto hubs = modify->get_fix_by_style("^dpoly/cells$");
-  if (hubs.empty()) error->all(FLERR, "Fix mesophyll/break needs fix dpoly/cells");
-  cells = dynamic_cast<FixDPolyCells *>(hubs.front());
+    error->all(FLERR,
+               "Fix mesophyll/break needs bond_style mesophyll/adhesion (alone or in hybrid)");
+  cells = FixDPolyCells::find(lmp, "Fix mesophyll/break");
 }
 
 // after a minimization (update->whichflag == 2), never inside one
@@ -98,9 +100,9 @@ double FixMesophyllBreak::uniform(int seed, bigint step, tagint atom1, tagint at
 {
   using Philox = r123::Philox4x32;
   const auto a1 = (uint64_t) atom1, a2 = (uint64_t) atom2, st = (uint64_t) step;
-  const Philox::ctr_type counter = {{(uint32_t) st, (uint32_t) a1, (uint32_t) a2,
-                                     (uint32_t) (st >> 32) ^ (uint32_t) (a1 >> 32) ^
-                                         ((uint32_t) (a2 >> 32) << 16)}};
+  const Philox::ctr_type counter = {
+      {(uint32_t) st, (uint32_t) a1, (uint32_t) a2,
+       (uint32_t) (st >> 32) ^ (uint32_t) (a1 >> 32) ^ ((uint32_t) (a2 >> 32) << 16)}};
   const Philox::key_type key = {{(uint32_t) seed, 0x4d455350u}};    // "MESP": this use only
   const Philox::ctr_type bits = Philox()(counter, key);
   return (bits[0] + 0.5) * (1.0 / 4294967296.0);
@@ -118,7 +120,8 @@ bool FixMesophyllBreak::at_junction_edge(const AdhesiveBond &b,
 
 // The same sequential pass on every rank; contact numbers change as bonds break, as in the
 // authors' code.
-std::vector<FixMesophyllBreak::Broken> FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
+std::vector<FixMesophyllBreak::Broken>
+FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
 {
   DPoly::AdhesionCounts counts;
   counts.build(bonds);
@@ -174,14 +177,17 @@ void FixMesophyllBreak::break_bonds()
   }
   cells->set_adhesion(survivors);
   if (comm->me == 0)
-    utils::logmesg(lmp, "fix mesophyll/break: step {}: {} bonds broke ({} at threshold, {} "
-                        "stochastic), {} adhesive bonds left\n", break_step, broken.size(),
-                   broken_threshold, broken_stochastic, bonds_left);
+    utils::logmesg(lmp,
+                   "fix mesophyll/break: step {}: {} bonds broke ({} at threshold, {} "
+                   "stochastic), {} adhesive bonds left\n",
+                   break_step, broken.size(), broken_threshold, broken_stochastic, bonds_left);
 }
 
 void FixMesophyllBreak::remove_bonds(const std::vector<Broken> &broken)
 {
-  auto key = [](tagint a, tagint b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  auto key = [](tagint a, tagint b) {
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
   std::set<std::pair<tagint, tagint>> gone;
   for (const auto &k : broken) gone.insert(key(k.bond.atom1, k.bond.atom2));
 
@@ -189,7 +195,8 @@ void FixMesophyllBreak::remove_bonds(const std::vector<Broken> &broken)
     int m = 0;
     while (m < atom->num_bond[i]) {
       const int type = atom->bond_type[i][m];
-      if (adhesion->is_adhesive_type(type) && gone.count(key(atom->tag[i], atom->bond_atom[i][m]))) {
+      if (adhesion->is_adhesive_type(type) &&
+          gone.count(key(atom->tag[i], atom->bond_atom[i][m]))) {
         const int last = --atom->num_bond[i];
         atom->bond_type[i][m] = atom->bond_type[i][last];
         atom->bond_atom[i][m] = atom->bond_atom[i][last];
@@ -241,11 +248,16 @@ void FixMesophyllBreak::store_local_output(const std::vector<Broken> &broken)
 double FixMesophyllBreak::compute_vector(int n)
 {
   switch (n) {
-    case 0: return broken_threshold;
-    case 1: return broken_stochastic;
-    case 2: return bonds_left;
-    case 3: return broken_total;
-    default: return break_step;
+    case 0:
+      return broken_threshold;
+    case 1:
+      return broken_stochastic;
+    case 2:
+      return bonds_left;
+    case 3:
+      return broken_total;
+    default:
+      return break_step;
   }
 }
 

@@ -42,11 +42,11 @@ class FixMesophyllBreak : public Fix {
 
  private:
   int seed;
-  double beta;               // inverse temperature of stochastic breaking
-  double threshold;          // breaking stretch r*/s; U0 = eps_c/(2 z) (r*/s - 1)^2
-  int edges_only;            // stochastic test only at the edges of junctions
-  int after_runs;            // also break after MD runs, not only after minimizations
-  bigint break_step;         // number of breaking steps so far: the random stream's step
+  double beta;          // inverse temperature of stochastic breaking
+  double threshold;     // breaking stretch r*/s; U0 = eps_c/(2 z) (r*/s - 1)^2
+  int edges_only;       // stochastic test only at the edges of junctions
+  int after_runs;       // also break after MD runs, not only after minimizations
+  bigint break_step;    // number of breaking steps so far: the random stream's step
   bigint broken_total;
   int broken_threshold, broken_stochastic;
   bigint bonds_left;

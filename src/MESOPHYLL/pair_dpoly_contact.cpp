@@ -80,7 +80,8 @@ void PairDPolyContact::coeff(int narg, char **arg)
       setflag[i][j] = 1;
       count++;
     }
-  if (count == 0) error->all(FLERR, "Pair style dpoly/contact: no type pair in {} {}", arg[0], arg[1]);
+  if (count == 0)
+    error->all(FLERR, "Pair style dpoly/contact: no type pair in {} {}", arg[0], arg[1]);
 }
 
 void PairDPolyContact::init_style()
@@ -93,9 +94,10 @@ void PairDPolyContact::init_style()
   // dropped from the neighbor list; ring neighbours are skipped by this style itself.
   for (int k = 1; k <= 3; k++)
     if (force->special_lj[k] != 1.0)
-      error->all(FLERR, "Pair style dpoly/contact needs special_bonds lj 1.0 1.0 1.0 (1-{} weight "
-                        "is {}): bonded vertices must still repel on overlap", k + 1,
-                 force->special_lj[k]);
+      error->all(FLERR,
+                 "Pair style dpoly/contact needs special_bonds lj 1.0 1.0 1.0 (1-{} weight "
+                 "is {}): bonded vertices must still repel on overlap",
+                 k + 1, force->special_lj[k]);
 
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
   double largest = 0.0;
