@@ -88,37 +88,6 @@ Polygon square(double x, double y, double side)
   return {{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}};
 }
 
-struct Contacts {
-  std::string z_rule = "bonds";
-  std::string self = "yes";
-  std::string break_options = "";    // empty: no fix mesophyll/break
-};
-
-std::string contact_commands(const std::string &data, const Contacts &c = Contacts())
-{
-  std::string cmds = "units lj\ndimension 2\natom_style molecular\natom_modify map array\n"
-                     "boundary p p p\n"
-                     "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
-                     "bond_style hybrid dpoly/segment mesophyll/adhesion z " +
-      c.z_rule +
-      "\n"
-      "angle_style dpoly/bending\n"
-      "read_data " +
-      data +
-      " fix Vertices NULL Vertices extra/bond/per/atom 6 "
-      "extra/special/per/atom 40\n"
-      "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
-      "angle_coeff * 0.4\npair_style dpoly/contact self " +
-      c.self +
-      "\n"
-      "pair_coeff * * 1.0\nspecial_bonds lj 1.0 1.0 1.0\ncomm_modify cutoff 3.0\n"
-      "fix cells all dpoly/cells eps_a 1.0\n";
-  if (!c.break_options.empty()) cmds += "fix break all mesophyll/break " + c.break_options + "\n";
-  return cmds +
-      "thermo_style custom step pe ebond eangle epair f_cells press pxx pyy\n"
-      "thermo_modify norm no\n";
-}
-
 // The nine-cell tissue of the tests' data, overlapping, bonded, then opened a little so that
 // some bonds are stretched and others still overlap.
 std::unique_ptr<LammpsSession>

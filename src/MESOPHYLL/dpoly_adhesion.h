@@ -41,6 +41,12 @@ namespace DPoly {
     int vertex_bonds(tagint atom) const { return lookup(per_vertex, atom); }
     int cell_bonds(tagint cell) const { return lookup(per_cell, cell); }
     int cell_contacts(tagint cell) const;
+    // the cells bonded to 'cell', each with the number of bonds between them (nullptr: none)
+    const std::unordered_map<tagint, int> *bonded_cells(tagint cell) const
+    {
+      const auto found = between_cells.find(cell);
+      return found == between_cells.end() ? nullptr : &found->second;
+    }
     double contact_number(tagint cell, ContactRule rule) const
     {
       return rule == ContactRule::BONDS ? cell_bonds(cell) : cell_contacts(cell);

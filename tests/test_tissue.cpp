@@ -1,0 +1,75 @@
+// Tissue observables of compute dpoly/tissue against analytic values and against the other
+// styles' own counts. Runs on any number of ranks.
+#include "test_helpers.h"
+
+#include "gtest/gtest.h"
+
+#include <memory>
+
+using namespace test;
+
+// One regular 16-gon alone: phi, patch phi, shape parameter, no neighbours, all vertices void.
+TEST(TissueObservables, RegularPolygonIsAnalytic)
+{
+  LammpsSession s;
+  s.run(contact_commands(data_file("single_contacts.data")) +
+        "compute tissue all dpoly/tissue\nthermo_style custom step pe c_tissue[*]\n"
+        "run 0 post no");
+  const int n = s.natoms();
+  const std::vector<double> x = s.gather("x", 3);
+  const double radius = std::hypot(x[0] - x[3 * (n / 2)], x[1] - x[3 * (n / 2) + 1]) / 2.0;
+  const double sigma = s.gather("d_sigma", 1)[0];
+  const double box = s.equal_variable("lx*ly");
+  const double pushed = radius + 0.5 * sin(PI / 3.0) * sigma;
+
+  EXPECT_NEAR(s.thermo("c_tissue[1]"), 0.5 * n * radius * radius * sin(2 * PI / n) / box, 1e-13);
+  EXPECT_NEAR(s.thermo("c_tissue[2]"), 0.5 * n * pushed * pushed * sin(2 * PI / n) / box, 1e-13);
+  EXPECT_NEAR(s.thermo("c_tissue[3]"), n * tan(PI / n) / PI, 1e-12);
+  EXPECT_EQ(s.thermo("c_tissue[4]"), 0.0);
+  EXPECT_EQ(s.thermo("c_tissue[5]"), 0.0);
+  EXPECT_EQ(s.thermo("c_tissue[6]"), 1.0);
+  s.run("thermo_style custom step c_tissue[1][6]\nrun 0 post no");
+  EXPECT_EQ(s.thermo("c_tissue[1][6]"), 1.0) << "with no bonds every vertex faces the void";
+}
+
+// A 3x3 periodic lattice of touching cells: each touches its four lattice neighbours, before
+// and after bonding; the bond count is adhere_cells' count; the void fraction matches the
+// per-vertex bond counts of compute dpoly/adhesion.
+TEST(TissueObservables, LatticeNeighboursBondsAndVoids)
+{
+  LammpsSession s;
+  s.run(contact_commands(data_file("overlapping.data")) +
+        "compute tissue all dpoly/tissue\ncompute adhesion all dpoly/adhesion\n"
+        "variable void atom c_adhesion==0\ncompute voids all reduce sum v_void\n"
+        "thermo_style custom step c_tissue[*] c_voids\nrun 0 post no");
+  EXPECT_EQ(s.thermo("c_tissue[4]"), 4.0);
+  EXPECT_EQ(s.thermo("c_tissue[6]"), 9.0);
+  s.run("adhere_cells all 2\nrun 0 post no");
+  EXPECT_EQ(s.thermo("c_tissue[4]"), 4.0);
+  EXPECT_EQ(s.thermo("c_tissue[5]"), s.thermo("bonds") - s.natoms());
+  double void_fraction_sum = 0.0;
+  s.run("thermo_style custom step c_tissue[*][6] c_voids\nrun 0 post no");
+  for (int row = 1; row <= 9; row++)
+    void_fraction_sum += s.thermo("c_tissue[" + std::to_string(row) + "][6]");
+  // every cell has 16 vertices
+  EXPECT_NEAR(void_fraction_sum * 16.0, s.thermo("c_voids"), 1e-9);
+  EXPECT_GT(s.thermo("c_voids"), 0.0);
+  EXPECT_LT(s.thermo("c_voids"), s.natoms());
+}
+
+TEST(TissueObservables, ParallelRunMatchesSerialRun)
+{
+  if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
+  auto observe = [](MPI_Comm comm) {
+    auto s = std::make_unique<LammpsSession>(comm);
+    s->run(contact_commands(data_file("overlapping.data")) +
+           "adhere_cells all 2\ncompute tissue all dpoly/tissue\n"
+           "thermo_style custom step c_tissue[*]\nrun 0 post no");
+    std::vector<double> values;
+    for (int k = 1; k <= 6; k++) values.push_back(s->thermo("c_tissue[" + std::to_string(k) + "]"));
+    return values;
+  };
+  const std::vector<double> parallel = observe(MPI_COMM_WORLD), serial = observe(self_comm());
+  for (int k = 0; k < 6; k++)
+    EXPECT_NEAR(parallel[k], serial[k], 1e-12 * std::fabs(serial[k])) << k;
+}
