@@ -381,10 +381,11 @@ TEST_F(BadInput, RingOfTwoVertices)
   const std::string path = scratch("pair.data");
   if (world_size() == 1) {
     FILE *fp = fopen(path.c_str(), "w");
-    fprintf(fp, "two\n\n2 atoms\n1 atom types\n1 bonds\n1 bond types\n2 angles\n1 angle types\n\n"
-                "0 4 xlo xhi\n0 4 ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\n"
-                "Atoms # molecular\n\n1 1 1 1 1 0\n2 1 1 2 1 0\n\nBonds\n\n1 1 1 2\n\n"
-                "Angles\n\n1 1 2 1 2\n2 1 1 2 1\n\nVertices\n\n1 1 1 0 1\n2 1 1 0 1\n");
+    fprintf(fp,
+            "two\n\n2 atoms\n1 atom types\n1 bonds\n1 bond types\n2 angles\n1 angle types\n\n"
+            "0 4 xlo xhi\n0 4 ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\n"
+            "Atoms # molecular\n\n1 1 1 1 1 0\n2 1 1 2 1 0\n\nBonds\n\n1 1 1 2\n\n"
+            "Angles\n\n1 1 2 1 2\n2 1 1 2 1\n\nVertices\n\n1 1 1 0 1\n2 1 1 0 1\n");
     fclose(fp);
   }
   // a ring of two needs angles that repeat an atom, which LAMMPS refuses when reading them

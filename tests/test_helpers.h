@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace test {
@@ -106,6 +108,78 @@ inline double finite_difference_error(LammpsSession &s)
   s.scatter("x", 3, restored);
   s.run("run 0 post no");
   return relative_force_error(f, numeric);
+}
+
+// Hand-made tissues: polygons with chosen adhesive bonds.
+struct Polygon {
+  std::vector<std::pair<double, double>> corners;    // counter-clockwise
+};
+
+struct Tissue {
+  std::vector<Polygon> cells;
+  std::vector<std::pair<int, int>> adhesive;    // 1-based atom IDs
+  double sigma = 0.5;
+  double box = 40.0;
+};
+
+// A data file in which every cell sits at its preferred area, lengths and angles, so that only
+// contacts and adhesion exert forces.
+inline std::string write_tissue(const Tissue &t, const std::string &name)
+{
+  std::vector<std::vector<double>> atoms;    // id mol x y sigma l0 theta0 a0
+  std::vector<std::pair<int, int>> segments;
+  std::vector<std::vector<int>> angles;
+  for (size_t c = 0; c < t.cells.size(); c++) {
+    const auto &p = t.cells[c].corners;
+    const int n = (int) p.size(), first = (int) atoms.size() + 1;
+    double area = 0.0;
+    for (int k = 0; k < n; k++)
+      area += 0.5 * (p[k].first * p[(k + 1) % n].second - p[(k + 1) % n].first * p[k].second);
+    for (int k = 0; k < n; k++) {
+      const auto &a = p[(k + n - 1) % n], &b = p[k], &d = p[(k + 1) % n];
+      const double d1[2] = {b.first - a.first, b.second - a.second};
+      const double d2[2] = {d.first - b.first, d.second - b.second};
+      const double theta = atan2(d1[0] * d2[1] - d1[1] * d2[0], d1[0] * d2[0] + d1[1] * d2[1]);
+      atoms.push_back({(double) first + k, (double) c + 1, b.first, b.second, t.sigma,
+                       std::hypot(d2[0], d2[1]), theta, area});
+      segments.push_back({first + k, first + (k + 1) % n});
+      angles.push_back({first + (k + n - 1) % n, first + k, first + (k + 1) % n});
+    }
+  }
+  const std::string path = scratch(name);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) {    // one writer; the others wait until the file is complete
+    MPI_Barrier(MPI_COMM_WORLD);
+    return path;
+  }
+  std::ofstream out(path);
+  out.precision(17);
+  out << "tissue\n\n"
+      << atoms.size() << " atoms\n1 atom types\n"
+      << segments.size() + t.adhesive.size() << " bonds\n2 bond types\n"
+      << angles.size() << " angles\n1 angle types\n\n0 " << t.box << " xlo xhi\n0 " << t.box
+      << " ylo yhi\n-0.5 0.5 zlo zhi\n\nMasses\n\n1 1\n\nAtoms # molecular\n\n";
+  for (const auto &a : atoms)
+    out << (int) a[0] << " " << (int) a[1] << " 1 " << a[2] << " " << a[3] << " 0\n";
+  out << "\nBonds\n\n";
+  int id = 1;
+  for (const auto &s : segments) out << id++ << " 1 " << s.first << " " << s.second << "\n";
+  for (const auto &b : t.adhesive) out << id++ << " 2 " << b.first << " " << b.second << "\n";
+  out << "\nAngles\n\n";
+  id = 1;
+  for (const auto &a : angles) out << id++ << " 1 " << a[0] << " " << a[1] << " " << a[2] << "\n";
+  out << "\nVertices\n\n";
+  for (const auto &a : atoms)
+    out << (int) a[0] << " " << a[4] << " " << a[5] << " " << a[6] << " " << a[7] << "\n";
+  out.close();
+  MPI_Barrier(MPI_COMM_WORLD);
+  return path;
+}
+
+inline Polygon square(double x, double y, double side)
+{
+  return {{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}};
 }
 
 // A tissue with contacts and adhesion: segment + adhesion bonds (types 1, 2), bending, the

@@ -1,0 +1,253 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "fix_mesophyll_grow.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "dpoly_gather.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "fix_dpoly_cells.h"
+#include "math_const.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
+    theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1), scale_diameters(1),
+    after_runs(0), steps(0), void_vertices(0), cells_above_max(0), cells(nullptr)
+{
+  bool shape_max_given = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    if (iarg + 2 > narg)
+      utils::missing_cmd_args(FLERR, std::string("fix mesophyll/grow ") + arg[iarg], error);
+    const char *key = arg[iarg], *value = arg[iarg + 1];
+    auto number = [&](double lo, bool lo_open) {
+      const double v = utils::numeric(FLERR, value, false, lmp);
+      if (lo_open ? !(v > lo) : !(v >= lo))
+        error->all(FLERR, "Fix mesophyll/grow {} must be {} {}, got {}", key,
+                   lo_open ? ">" : ">=", lo, value);
+      return v;
+    };
+    if (strcmp(key, "delta_a") == 0)
+      delta_a = number(0.0, false);
+    else if (strcmp(key, "lambda") == 0)
+      lambda = number(0.0, false);
+    else if (strcmp(key, "c_L") == 0) {
+      c_length = number(0.0, false);
+      if (c_length > 1.0)
+        error->all(FLERR, "Fix mesophyll/grow c_L must be in [0, 1], got {}", value);
+    } else if (strcmp(key, "c_B") == 0)
+      c_bending = number(0.0, false);
+    else if (strcmp(key, "theta0_min") == 0)
+      theta0_min = utils::numeric(FLERR, value, false, lmp);
+    else if (strcmp(key, "calA_max") == 0) {
+      shape_max = number(0.0, true);
+      shape_max_given = true;
+    } else if (strcmp(key, "rules") == 0) {
+      if (strcmp(value, "code") == 0) {
+        grow_above_max = 1;
+        if (!shape_max_given) shape_max = 2.5;
+      } else if (strcmp(value, "paper") == 0) {
+        grow_above_max = 0;
+        if (!shape_max_given) shape_max = 3.0;
+      } else
+        error->all(FLERR, "Fix mesophyll/grow rules must be 'code' or 'paper', got '{}'", value);
+    } else if (strcmp(key, "scale_sigma") == 0)
+      scale_diameters = utils::logical(FLERR, value, false, lmp);
+    else if (strcmp(key, "runs") == 0)
+      after_runs = utils::logical(FLERR, value, false, lmp);
+    else
+      error->all(FLERR, "Unknown fix mesophyll/grow keyword: {}", key);
+    iarg += 2;
+  }
+
+  vector_flag = 1;
+  size_vector = 3;    // growth steps, void-facing vertices, cells at or above calA_max
+  extvector = 0;
+  global_freq = 1;
+  restart_global = 1;
+}
+
+int FixMesophyllGrow::setmask()
+{
+  return 0;    // acts in post_run()
+}
+
+void FixMesophyllGrow::init()
+{
+  cells = FixDPolyCells::find(lmp, "Fix mesophyll/grow");
+  // per growth step: grow, minimize, record, break. Both act after a minimization, so bonds must
+  // break before the cells grow: the breaking fix has to come first.
+  int mine = -1;
+  for (int m = 0; m < modify->nfix; m++) {
+    if (modify->fix[m] == this) mine = m;
+    if (utils::strmatch(modify->fix[m]->style, "^mesophyll/break") && mine >= 0)
+      error->all(FLERR,
+                 "Fix mesophyll/grow {} is defined before fix mesophyll/break {}: define the "
+                 "breaking fix first, so that bonds break before cells grow",
+                 id, modify->fix[m]->id);
+  }
+}
+
+void FixMesophyllGrow::post_run()
+{
+  if (update->whichflag == 2 || (after_runs && update->whichflag == 1)) grow();
+}
+
+/* ----------------------------------------------------------------------
+   model.md section 4, with dl_std = (p/a) delta_a / 2 from the current p and a:
+   void-facing vertex i (no adhesive bond), in a void run of length b_v, cell mean run length
+   <b_v>:  dl_i = (lambda dl_std / n) [(1 - c_L) + c_L (<b_v> - b_v)/p]   if calA < calA_max,
+           dl_i = dl_std/n (rules code) or 0 (rules paper)                 otherwise;
+   dl_i is added to the l0 of both segments at i. A run's length is the boundary it exposes: each
+   of its vertices contributes half of each of its two segments. theta0 of void vertices drops by
+   c_B dl_std/n, not below theta0_min; then every theta0 relaxes toward its ring neighbours by
+   (dl_std/n) times the two differences, all from the values before smoothing.
+------------------------------------------------------------------------- */
+
+void FixMesophyllGrow::grow()
+{
+  if (!cells) init();
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix mesophyll/grow");
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+
+  std::vector<VertexGrowth> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
+    if (j < 0)
+      error->one(FLERR, "Fix mesophyll/grow: ring neighbour of vertex {} missing", atom->tag[i]);
+    mine.push_back({atom->tag[i], atom->molecule[i],
+                    std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]), state.preferred_angle[i]});
+  }
+  std::vector<VertexGrowth> all = DPoly::gather_on_all_ranks(std::move(mine), world);
+  std::sort(all.begin(), all.end(), [](const VertexGrowth &u, const VertexGrowth &v) {
+    return u.tag < v.tag;
+  });
+  std::unordered_map<tagint, const VertexGrowth *> vertex;
+  for (const auto &v : all) vertex[v.tag] = &v;
+
+  std::unordered_map<tagint, double> length_growth, new_angle;
+  std::unordered_map<tagint, bool> visited;
+  void_vertices = cells_above_max = 0;
+  for (const auto &v : all) {    // each ring once, from its smallest tag
+    if (visited[v.tag]) continue;
+    std::vector<tagint> ring;
+    for (tagint u = v.tag; !visited[u]; u = cells->ring_neighbours(u).next) {
+      visited[u] = true;
+      ring.push_back(u);
+    }
+    grow_ring(ring, vertex, length_growth, new_angle);
+  }
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const tagint t = atom->tag[i];
+    state.preferred_length[i] += length_growth[t];
+    state.preferred_angle[i] = new_angle[t];
+    const double a0 = state.preferred_area[i];
+    if (scale_diameters) state.diameter[i] *= sqrt((a0 + delta_a) / a0);
+    state.preferred_area[i] = a0 + delta_a;
+  }
+  steps++;
+}
+
+void FixMesophyllGrow::grow_ring(const std::vector<tagint> &ring,
+                                 std::unordered_map<tagint, const VertexGrowth *> &vertex,
+                                 std::unordered_map<tagint, double> &length_growth,
+                                 std::unordered_map<tagint, double> &new_angle)
+{
+  const int n = (int) ring.size();
+  const int c = cells->cell_index(vertex[ring[0]]->cell);
+  const double p = cells->perimeter(c), a = cells->area(c);
+  const double dl_std = 0.5 * (p / a) * delta_a;
+  const double shape = p * p / (4.0 * MathConst::MY_PI * a);
+  if (shape >= shape_max) cells_above_max++;
+  auto is_void = [&](int k) {
+    return cells->adhesion().vertex_bonds(ring[k]) == 0;
+  };
+  auto segment = [&](int k) {
+    return vertex[ring[(k + n) % n]]->segment;
+  };
+
+  // void runs, each with the boundary length it exposes; a fully void ring is one run of length p
+  std::vector<double> run_length(n, 0.0), runs;
+  int first_bonded = 0;
+  while (first_bonded < n && is_void(first_bonded)) first_bonded++;
+  if (first_bonded == n) {
+    run_length.assign(n, p);
+    runs.push_back(p);
+  } else {
+    for (int step = 1; step <= n;) {
+      const int k = (first_bonded + step) % n;
+      if (!is_void(k)) {
+        step++;
+        continue;
+      }
+      std::vector<int> members;
+      for (int m = k; is_void(m); m = (m + 1) % n) members.push_back(m);
+      double length = 0.0;
+      for (int q : members) length += 0.5 * (segment(q - 1) + segment(q));
+      for (int q : members) run_length[q] = length;
+      runs.push_back(length);
+      step += (int) members.size();
+    }
+  }
+  double mean_run = 0.0;
+  for (double r : runs) mean_run += r / runs.size();
+
+  std::vector<double> dl(n, 0.0), angle(n);
+  for (int k = 0; k < n; k++) {
+    angle[k] = vertex[ring[k]]->preferred_angle;
+    if (!is_void(k)) continue;
+    void_vertices++;
+    if (shape < shape_max)
+      dl[k] = lambda * dl_std / n * ((1.0 - c_length) + c_length * (mean_run - run_length[k]) / p);
+    else
+      dl[k] = grow_above_max ? dl_std / n : 0.0;
+    angle[k] = std::max(theta0_min, angle[k] - c_bending * dl_std / n);
+  }
+  for (int k = 0; k < n; k++) {
+    const int before = (k + n - 1) % n, after = (k + 1) % n;
+    length_growth[ring[k]] = dl[k] + dl[after];    // segment k -> k+1 touches both vertices
+    new_angle[ring[k]] =
+        angle[k] + dl_std / n * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+  }
+}
+
+double FixMesophyllGrow::compute_vector(int n)
+{
+  if (n == 0) return steps;
+  if (n == 1) return void_vertices;
+  return cells_above_max;
+}
+
+void FixMesophyllGrow::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  double state = (double) steps;
+  int size = sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(&state, sizeof(double), 1, fp);
+}
+
+void FixMesophyllGrow::restart(char *buf)
+{
+  steps = (bigint) * ((double *) buf);
+}

@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(mesophyll/grow,FixMesophyllGrow);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_MESOPHYLL_GROW_H
+#define LMP_FIX_MESOPHYLL_GROW_H
+
+#include "fix.h"
+
+#include <unordered_map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Void-localized growth between minimizations (model.md section 4): every cell's a0 grows by
+// delta_a, vertex diameters scale with sqrt(a0), preferred segment lengths grow only around
+// void-facing vertices, and their preferred angles drift negative, then are smoothed.
+class FixMesophyllGrow : public Fix {
+ public:
+  FixMesophyllGrow(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void post_run() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // Collective: one growth step now.
+  void grow();
+
+ private:
+  // What every rank needs of a vertex to find the void runs of its ring.
+  struct VertexGrowth {
+    tagint tag, cell;
+    double segment;            // current length of the segment to the next vertex
+    double preferred_angle;    // theta0 before this step
+  };
+  void grow_ring(const std::vector<tagint> &ring,
+                 std::unordered_map<tagint, const VertexGrowth *> &vertex,
+                 std::unordered_map<tagint, double> &length_growth,
+                 std::unordered_map<tagint, double> &new_angle);
+
+  double delta_a, lambda, c_length, c_bending, theta0_min, shape_max;
+  int grow_above_max;    // above shape_max: isometric growth (authors' code) or none (paper)
+  int scale_diameters;
+  int after_runs;
+  bigint steps;
+  int void_vertices, cells_above_max;
+  class FixDPolyCells *cells;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,208 @@
+// Growth rules of fix mesophyll/grow (model.md section 4) on hand-made rings whose void runs are
+// known: exact changes of l0, theta0, a0 and sigma, the clamp at theta0_min, and both calA_max
+// rules. Runs on any number of ranks.
+#include "test_helpers.h"
+
+#include "gtest/gtest.h"
+
+#include <memory>
+
+using namespace test;
+
+namespace {
+
+// Cell 1: a regular octagon of circumradius 1 (vertices 1-8), bonded at vertices 2, 3 and 6, so
+// its void runs are {4, 5} and {7, 8, 1}. Cell 2: a unit square (vertices 9-12) bonded at 9, 10,
+// 11: one void run {12}. Bonds are long, but no minimization runs here.
+std::string octagon_and_square()
+{
+  Tissue t;
+  Polygon octagon;
+  for (int k = 0; k < 8; k++)
+    octagon.corners.push_back({10.0 + cos(2 * PI * k / 8), 10.0 + sin(2 * PI * k / 8)});
+  t.cells = {octagon, square(20.0, 10.0, 1.0)};
+  t.adhesive = {{2, 9}, {3, 10}, {6, 11}};
+  t.sigma = 0.3;
+  return write_tissue(t, "growth.data");
+}
+
+std::unique_ptr<LammpsSession> grown(const std::string &options, MPI_Comm comm = MPI_COMM_WORLD)
+{
+  auto s = std::make_unique<LammpsSession>(comm);
+  s->run(contact_commands(octagon_and_square()) + "fix grow all mesophyll/grow runs yes " +
+         options + "\nrun 0 post no");
+  return s;
+}
+
+struct Ring {
+  std::vector<bool> is_void;
+  std::vector<double> run;    // run length of each void vertex
+  double segment, perimeter, area;
+};
+
+// the octagon and the square as the test knows them
+Ring octagon_ring()
+{
+  const double l = 2.0 * sin(PI / 8);
+  return {{true, false, false, true, true, false, true, true},
+          {3 * l, 0, 0, 2 * l, 2 * l, 0, 3 * l, 3 * l},
+          l,
+          8 * l,
+          2.0 * sqrt(2.0)};
+}
+
+Ring square_ring()
+{
+  return {{false, false, false, true}, {0, 0, 0, 1.0}, 1.0, 4.0, 1.0};
+}
+
+struct Expected {
+  std::vector<double> l0, theta0;
+};
+
+// model.md section 4 written out for one ring
+Expected expected_growth(const Ring &r, double theta_start, double delta_a, double lambda,
+                         double c_l, double c_b, double theta_min, double above_factor,
+                         bool below_max)
+{
+  const int n = (int) r.is_void.size();
+  const double dl_std = 0.5 * r.perimeter / r.area * delta_a;
+  double mean_run = 0.0, runs = 0.0;
+  for (int k = 0; k < n; k++)    // each run counted once: at its first vertex
+    if (r.is_void[k] && !r.is_void[(k + n - 1) % n]) {
+      mean_run += r.run[k];
+      runs += 1.0;
+    }
+  mean_run /= runs;
+  std::vector<double> dl(n, 0.0), angle(n, theta_start);
+  for (int k = 0; k < n; k++) {
+    if (!r.is_void[k]) continue;
+    dl[k] = below_max
+        ? lambda * dl_std / n * ((1 - c_l) + c_l * (mean_run - r.run[k]) / r.perimeter)
+        : above_factor * dl_std / n;
+    angle[k] = std::max(theta_min, theta_start - c_b * dl_std / n);
+  }
+  Expected e;
+  for (int k = 0; k < n; k++) {
+    const int before = (k + n - 1) % n, after = (k + 1) % n;
+    e.l0.push_back(r.segment + dl[k] + dl[after]);
+    e.theta0.push_back(angle[k] + dl_std / n * (angle[after] + angle[before] - 2 * angle[k]));
+  }
+  return e;
+}
+
+void expect_ring(const std::vector<double> &l0, const std::vector<double> &theta0, int first,
+                 const Expected &e, const char *what)
+{
+  for (size_t k = 0; k < e.l0.size(); k++) {
+    EXPECT_NEAR(l0[first + k], e.l0[k], 1e-13) << what << " vertex " << first + k + 1;
+    EXPECT_NEAR(theta0[first + k], e.theta0[k], 1e-13) << what << " vertex " << first + k + 1;
+  }
+}
+
+}    // namespace
+
+TEST(Growth, VoidRunsGrowLengthsAndTurnAngles)
+{
+  auto s = grown("delta_a 0.5 lambda 5 c_L 0.5 c_B 4");
+  const std::vector<double> l0 = s->gather("d_l0", 1), theta0 = s->gather("d_theta0", 1);
+  expect_ring(l0, theta0, 0,
+              expected_growth(octagon_ring(), 2 * PI / 8, 0.5, 5, 0.5, 4, -PI / 10, 1, true),
+              "octagon");
+  expect_ring(l0, theta0, 8,
+              expected_growth(square_ring(), PI / 2, 0.5, 5, 0.5, 4, -PI / 10, 1, true), "square");
+  EXPECT_EQ(s->thermo("f_grow[1]"), 1.0);
+  EXPECT_EQ(s->thermo("f_grow[2]"), 6.0) << "5 void vertices in the octagon, 1 in the square";
+}
+
+TEST(Growth, AreaGrowsAndDiametersFollow)
+{
+  auto s = grown("delta_a 0.25");
+  const std::vector<double> a0 = s->gather("d_a0", 1), sigma = s->gather("d_sigma", 1);
+  for (int k = 0; k < 8; k++) {
+    EXPECT_NEAR(a0[k], 2 * sqrt(2.0) + 0.25, 1e-13);
+    EXPECT_NEAR(sigma[k], 0.3 * sqrt((2 * sqrt(2.0) + 0.25) / (2 * sqrt(2.0))), 1e-13);
+  }
+  EXPECT_NEAR(a0[8], 1.25, 1e-13);
+  EXPECT_NEAR(sigma[8], 0.3 * sqrt(1.25), 1e-13);
+
+  auto fixed = grown("delta_a 0.25 scale_sigma no");
+  EXPECT_EQ(fixed->gather("d_sigma", 1)[0], 0.3);
+}
+
+TEST(Growth, PreferredAnglesStopAtTheirMinimum)
+{
+  auto s = grown("theta0_min 0.7");
+  const std::vector<double> l0 = s->gather("d_l0", 1), theta0 = s->gather("d_theta0", 1);
+  expect_ring(l0, theta0, 0,
+              expected_growth(octagon_ring(), 2 * PI / 8, 0.5, 5, 0.5, 4, 0.7, 1, true),
+              "octagon clamped");
+}
+
+// calA of the octagon is 1.055 and of the square 1.273: calA_max 1 puts both above it
+TEST(Growth, AboveShapeLimitGrowthIsIsometricOrNone)
+{
+  auto code = grown("calA_max 1.0 rules code");
+  expect_ring(code->gather("d_l0", 1), code->gather("d_theta0", 1), 0,
+              expected_growth(octagon_ring(), 2 * PI / 8, 0.5, 5, 0.5, 4, -PI / 10, 1, false),
+              "code rule");
+  EXPECT_EQ(code->thermo("f_grow[3]"), 2.0);
+
+  auto paper = grown("calA_max 1.0 rules paper");
+  expect_ring(paper->gather("d_l0", 1), paper->gather("d_theta0", 1), 0,
+              expected_growth(octagon_ring(), 2 * PI / 8, 0.5, 5, 0.5, 4, -PI / 10, 0, false),
+              "paper rule");
+}
+
+TEST(Growth, ParallelRunMatchesSerialRun)
+{
+  if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
+  auto parallel = grown("");
+  auto serial = grown("", self_comm());
+  for (const char *name : {"d_l0", "d_theta0", "d_a0", "d_sigma"})
+    EXPECT_EQ(parallel->gather(name, 1), serial->gather(name, 1)) << name;
+}
+
+class BadGrowth : public ::testing::Test {
+ protected:
+  void SetUp() override
+  {
+    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  }
+  static std::string error_of(const std::string &fix_line)
+  {
+    LammpsSession s;
+    return s.try_run(contact_commands(octagon_and_square()) + fix_line + "\nrun 0 post no");
+  }
+};
+
+TEST_F(BadGrowth, RefusesNonsense)
+{
+  EXPECT_NE(
+      error_of("fix g all mesophyll/grow delta_a -0.5").find("delta_a must be >= 0, got -0.5"),
+      std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow lambda -1").find("lambda must be >= 0, got -1"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow c_B -4").find("c_B must be >= 0, got -4"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow c_L 1.5").find("c_L must be in [0, 1], got 1.5"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow c_L -0.1").find("c_L must be >= 0, got -0.1"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow rules mine").find("rules must be 'code' or 'paper'"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow speed 2").find("keyword: speed"), std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow\nfix b all mesophyll/break 5")
+                .find("define the breaking fix first"),
+            std::string::npos);
+}
+
+TEST_F(BadGrowth, NeedsTheCells)
+{
+  LammpsSession s;
+  std::string cmds = contact_commands(octagon_and_square());
+  cmds.replace(cmds.find("fix cells all dpoly/cells eps_a 1.0\n"), 36, "");
+  cmds.replace(cmds.find(" f_cells"), 8, "");
+  const std::string msg = s.try_run(cmds + "fix g all mesophyll/grow\nrun 0 post no");
+  EXPECT_NE(msg.find("needs fix dpoly/cells"), std::string::npos) << msg;
+}
