@@ -1,0 +1,216 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "fix_dpoly_check.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute.h"
+#include "domain.h"
+#include "dpoly_gather.h"
+#include "dpoly_ring.h"
+#include "error.h"
+#include "fix_dpoly_cells.h"
+#include "min.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), target_pressure(0.0), pressure_tolerance(1.0e-6), stop_on_failure(0),
+    minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0}, cells(nullptr)
+{
+  int iarg = 3;
+  while (iarg < narg) {
+    if (iarg + 2 > narg)
+      utils::missing_cmd_args(FLERR, std::string("fix dpoly/check ") + arg[iarg], error);
+    if (strcmp(arg[iarg], "pressure") == 0) {
+      target_pressure = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (target_pressure <= 0.0)
+        error->all(FLERR, "Fix dpoly/check pressure must be > 0, got {}", arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "tolerance") == 0) {
+      pressure_tolerance = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (pressure_tolerance <= 0.0)
+        error->all(FLERR, "Fix dpoly/check tolerance must be > 0, got {}", arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "action") == 0) {
+      if (strcmp(arg[iarg + 1], "warn") == 0)
+        stop_on_failure = 0;
+      else if (strcmp(arg[iarg + 1], "error") == 0)
+        stop_on_failure = 1;
+      else
+        error->all(FLERR, "Fix dpoly/check action must be 'warn' or 'error', got '{}'",
+                   arg[iarg + 1]);
+    } else
+      error->all(FLERR, "Unknown fix dpoly/check keyword: {}", arg[iarg]);
+    iarg += 2;
+  }
+  vector_flag = 1;
+  size_vector = 5;
+  extvector = 0;
+  global_freq = 1;
+}
+
+int FixDPolyCheck::setmask()
+{
+  return 0;    // acts in post_run()
+}
+
+void FixDPolyCheck::init()
+{
+  cells = FixDPolyCells::find(lmp, "Fix dpoly/check");
+  // the breaking pass rebuilds ghost atoms and drops the forces this check reads: come first
+  bool seen_self = false;
+  for (int m = 0; m < modify->nfix; m++) {
+    if (modify->fix[m] == this) seen_self = true;
+    if (!seen_self && utils::strmatch(modify->fix[m]->style, "^mesophyll/"))
+      error->all(FLERR,
+                 "Fix dpoly/check {} must be defined before fix {} ({}), which changes the "
+                 "state after a minimization",
+                 id, modify->fix[m]->id, modify->fix[m]->style);
+  }
+}
+
+void FixDPolyCheck::post_run()
+{
+  if (update->whichflag == 2) check();
+}
+
+int FixDPolyCheck::check()
+{
+  if (!cells) init();
+  minima++;
+  Min *min = update->minimize;
+  const int stop = min->stop_condition;
+  const bool converged = (stop == Min::ETOL || stop == Min::FTOL || stop == Min::ZEROFORCE);
+  const double force_norm = sqrt(min->fnorm_sqr());
+
+  double pressure_error = 0.0;
+  if (target_pressure > 0.0) {
+    Compute *pressure = modify->get_compute_by_id("thermo_press");
+    if (!pressure) error->all(FLERR, "Fix dpoly/check: no thermo_press compute to measure P");
+    pressure_error = fabs(pressure->compute_scalar() - target_pressure) / target_pressure;
+  }
+
+  int inverted = 0;
+  tagint first_inverted = 0;
+  for (int c = 0; c < cells->ncells(); c++)
+    if (cells->area(c) <= 0.0) {
+      if (!inverted) first_inverted = cells->cell_id(c);
+      inverted++;
+    }
+  tagint first_tangled = 0;
+  const int tangled = tangled_cells(first_tangled);
+
+  last[0] = converged ? 1.0 : 0.0;
+  last[1] = force_norm;
+  last[2] = pressure_error;
+  last[3] = inverted;
+  last[4] = tangled;
+
+  std::string problems;
+  if (!converged)
+    problems += fmt::format("; the minimizer stopped without converging ({})", min->stopstr);
+  if (pressure_error > pressure_tolerance)
+    problems +=
+        fmt::format("; |P - P0|/P0 = {:.3g} exceeds {:.3g}", pressure_error, pressure_tolerance);
+  if (inverted)
+    problems += fmt::format("; {} cells have area <= 0 (first: cell {})", inverted, first_inverted);
+  if (tangled)
+    problems += fmt::format("; {} rings cross themselves (first: cell {})", tangled, first_tangled);
+
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix dpoly/check: minimum {} at step {}: {}, force norm {:.6g}{}\n", minima,
+                   update->ntimestep, min->stopstr, force_norm,
+                   target_pressure > 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error)
+                                         : "");
+  if (problems.empty()) return 0;
+  const std::string message =
+      fmt::format("Fix dpoly/check: minimum {} at step {}{}", minima, update->ntimestep, problems);
+  if (stop_on_failure) error->all(FLERR, message);
+  if (comm->me == 0) error->warning(FLERR, message);
+  return (!converged) + (pressure_error > pressure_tolerance) + (inverted > 0) + (tangled > 0);
+}
+
+/* ----------------------------------------------------------------------
+   rings that cross themselves: any two non-adjacent segments of one ring that intersect
+------------------------------------------------------------------------- */
+
+namespace {
+struct RingPoint {
+  tagint tag, cell;
+  double x, y;
+};
+
+bool segments_cross(const double *a, const double *b, const double *c, const double *d)
+{
+  auto side = [](const double *p, const double *q, const double *r) {
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  };
+  const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+  return ((s1 > 0) != (s2 > 0)) && ((s3 > 0) != (s4 > 0)) && s1 != 0 && s2 != 0 && s3 != 0 &&
+      s4 != 0;
+}
+}    // namespace
+
+int FixDPolyCheck::tangled_cells(tagint &first)
+{
+  std::vector<RingPoint> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & cells->groupbit)) continue;
+    double xu[3];
+    domain->unmap(atom->x[i], atom->image[i], xu);
+    mine.push_back({atom->tag[i], atom->molecule[i], xu[0], xu[1]});
+  }
+  std::map<tagint, const RingPoint *> by_tag;
+  const std::vector<RingPoint> all = DPoly::gather_on_all_ranks(std::move(mine), world);
+  for (const auto &p : all) by_tag[p.tag] = &p;
+
+  std::map<tagint, std::vector<tagint>> rings;    // cell -> vertices in ring order
+  std::map<tagint, bool> visited;
+  for (const auto &entry : by_tag) {
+    if (visited[entry.first]) continue;
+    auto &ring = rings[entry.second->cell];
+    for (tagint u = entry.first; !visited[u]; u = cells->ring_neighbours(u).next) {
+      visited[u] = true;
+      ring.push_back(u);
+    }
+  }
+  int tangled = 0;
+  first = 0;
+  for (const auto &entry : rings) {
+    const auto &ring = entry.second;
+    const int n = (int) ring.size();
+    bool crossed = false;
+    for (int i = 0; i < n && !crossed; i++)
+      for (int j = i + 2; j < n && !crossed; j++) {
+        if (i == 0 && j == n - 1) continue;    // neighbours through the closing segment
+        const RingPoint *a = by_tag[ring[i]], *b = by_tag[ring[(i + 1) % n]];
+        const RingPoint *c = by_tag[ring[j]], *d = by_tag[ring[(j + 1) % n]];
+        // the ring is whole in unwrapped coordinates (fix dpoly/cells checks it)
+        const double pa[2] = {a->x, a->y}, pb[2] = {b->x, b->y}, pc[2] = {c->x, c->y},
+                     pd[2] = {d->x, d->y};
+        crossed = segments_cross(pa, pb, pc, pd);
+      }
+    if (crossed) {
+      if (!tangled) first = entry.first;
+      tangled++;
+    }
+  }
+  return tangled;
+}
+
+double FixDPolyCheck::compute_vector(int n)
+{
+  return last[n];
+}

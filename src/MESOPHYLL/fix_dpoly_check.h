@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(dpoly/check,FixDPolyCheck);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_DPOLY_CHECK_H
+#define LMP_FIX_DPOLY_CHECK_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+// Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
+// stopped, the final force norm, |P - P0|/P0, cells with area <= 0 and rings that cross
+// themselves. Warns (default) or stops with an error that names what failed.
+class FixDPolyCheck : public Fix {
+ public:
+  FixDPolyCheck(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void post_run() override;
+  double compute_vector(int) override;
+
+  // Collective: check the current state as a minimum. Returns the number of problems found.
+  int check();
+
+ private:
+  double target_pressure;    // P0; <= 0: no pressure check
+  double pressure_tolerance;
+  int stop_on_failure;
+  bigint minima;
+  double last[5];    // converged, force norm, |P - P0|/P0, inverted cells, tangled cells
+  class FixDPolyCells *cells;
+  int tangled_cells(tagint &first);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,87 @@
+// fix dpoly/check: every minimum is checked and a failure is reported, never carried on silently.
+#include "test_helpers.h"
+
+#include "gtest/gtest.h"
+
+#include <memory>
+
+using namespace test;
+
+namespace {
+
+// the bonded lattice of the tests under fix box/relax at P0 = 1e-3, checked after each minimum
+std::unique_ptr<LammpsSession> relaxed_tissue(const std::string &check_options,
+                                              const std::string &minimize)
+{
+  auto s = std::make_unique<LammpsSession>();
+  s->run(contact_commands(data_file("overlapping.data")) + "fix check all dpoly/check " +
+         check_options +
+         "\nadhere_cells all 2\n"
+         "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\nmin_style cg\n" +
+         minimize);
+  return s;
+}
+
+}    // namespace
+
+TEST(Check, ConvergedMinimumAtTargetPressurePasses)
+{
+  auto s = relaxed_tissue("pressure 1.0e-3", "minimize 0.0 1.0e-10 20000 200000");
+  EXPECT_EQ(s->thermo("f_check[1]"), 1.0);
+  EXPECT_LT(s->thermo("f_check[3]"), 1.0e-6);
+  EXPECT_EQ(s->thermo("f_check[4]"), 0.0);
+  EXPECT_EQ(s->thermo("f_check[5]"), 0.0);
+  EXPECT_LT(s->thermo("f_check[2]"), 1.0e-8);
+}
+
+TEST(Check, WrongPressureIsReported)
+{
+  auto s = relaxed_tissue("pressure 2.0e-3", "minimize 0.0 1.0e-10 20000 200000");
+  EXPECT_NEAR(s->thermo("f_check[3]"), 0.5, 1.0e-6) << "P = 1e-3 against a stated P0 of 2e-3";
+}
+
+TEST(Check, UnfinishedMinimizationWarnsOrStops)
+{
+  if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  auto warned = relaxed_tissue("pressure 1.0e-3", "minimize 0.0 1.0e-10 5 50");
+  EXPECT_EQ(warned->thermo("f_check[1]"), 0.0);
+
+  LammpsSession s;
+  const std::string msg = s.try_run(
+      contact_commands(data_file("overlapping.data")) +
+      "fix check all dpoly/check pressure 1.0e-3 action error\nadhere_cells all 2\n"
+      "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\nmin_style cg\nminimize 0.0 1.0e-10 5 50");
+  EXPECT_NE(msg.find("minimum 1 at step 5; the minimizer stopped without converging (max "
+                     "iterations)"),
+            std::string::npos)
+      << msg;
+}
+
+// a figure-eight ring with unequal lobes has positive area, so only the crossing test sees it
+TEST(Check, RingThatCrossesItselfIsReported)
+{
+  Tissue t;
+  t.cells = {{{{10.0, 10.0}, {13.0, 13.0}, {13.0, 11.0}, {10.0, 14.0}}}};
+  LammpsSession s;
+  s.run(contact_commands(write_tissue(t, "figure8.data")) +
+        "fix check all dpoly/check\n"
+        "minimize 0.0 0.0 0 0");
+  EXPECT_EQ(s.thermo("f_check[5]"), 1.0);
+  EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
+}
+
+TEST(Check, BadInput)
+{
+  if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  auto error_of = [](const std::string &line) {
+    LammpsSession s;
+    return s.try_run(contact_commands(data_file("overlapping.data")) + line + "\nrun 0 post no");
+  };
+  EXPECT_NE(error_of("fix c all dpoly/check pressure 0").find("pressure must be > 0, got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix c all dpoly/check action shout").find("must be 'warn' or 'error'"),
+            std::string::npos);
+  EXPECT_NE(error_of("fix b all mesophyll/break 3\nfix c all dpoly/check")
+                .find("must be defined before fix b"),
+            std::string::npos);
+}
