@@ -21,6 +21,7 @@ configs = {
     "single_contacts.data": ["--cells", "1", "--vertices", "16", "--spacing", "3.0",
                              "--bond-types", "2"],
 }
+configs["ring12.mol"] = ["--molecule", "--vertices", "12"]    # a molecule template
 for name, args in configs.items():
     subprocess.run([sys.executable, generator, os.path.join(outdir, name)] + args, check=True)
 print(f"wrote {len(configs)} data files to {outdir}")

@@ -73,3 +73,32 @@ TEST(TissueObservables, ParallelRunMatchesSerialRun)
   for (int k = 0; k < 6; k++)
     EXPECT_NEAR(parallel[k], serial[k], 1e-12 * std::fabs(serial[k])) << k;
 }
+
+// compute dpoly/vertex on a regular polygon made from the molecule template of
+// tools/make_cells.py: every turning angle is 2 pi/n, every segment the same, the area is a0.
+TEST(VertexObservables, RegularPolygonFromMoleculeTemplate)
+{
+  LammpsSession s;
+  s.run("units lj\ndimension 2\natom_style molecular\natom_modify map array\nboundary p p p\n"
+        "region box block 0 6 0 6 -0.5 0.5\n"
+        "create_box 1 box bond/types 1 angle/types 1 extra/bond/per/atom 2 "
+        "extra/angle/per/atom 1 extra/special/per/atom 10\nmass 1 1.0\n"
+        "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+        "molecule ring " +
+        data_file("ring12.mol") +
+        "\n"
+        "create_atoms 0 single 3 3 0 mol ring 1\n"
+        "set group all d_sigma 0.3\nset group all d_l0 0.3\nset group all d_theta0 0.5\n"
+        "set group all d_a0 1.0\nbond_style dpoly/segment\nbond_coeff * 1\n"
+        "angle_style dpoly/bending\nangle_coeff * 1\ncomm_modify cutoff 2.0\n"
+        "fix cells all dpoly/cells\ncompute vertex all dpoly/vertex\n"
+        "compute theta all reduce max c_vertex[1]\ncompute theta_min all reduce min c_vertex[1]\n"
+        "compute length all reduce max c_vertex[2]\n"
+        "thermo_style custom step pe c_theta c_theta_min c_length f_cells[2]\nrun 0 post no");
+  const int n = 12;
+  const double radius = sqrt(2.0 / (n * sin(2 * PI / n)));
+  EXPECT_NEAR(s.thermo("c_theta"), 2 * PI / n, 1e-12);
+  EXPECT_NEAR(s.thermo("c_theta_min"), 2 * PI / n, 1e-12);
+  EXPECT_NEAR(s.thermo("c_length"), 2 * radius * sin(PI / n), 1e-12);
+  EXPECT_NEAR(s.thermo("f_cells[2]"), 1.0, 1e-12);
+}

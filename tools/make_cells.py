@@ -78,9 +78,30 @@ def write(path, box, atoms, bonds, angles, state, comment, bond_types=1, shuffle
             out.write(f"{i} {s[0]:.16g} {s[1]:.16g} {s[2]:.16g} {s[3]:.16g}\n")
 
 
+def write_molecule(path, n, a0, calA0_relative):
+    """One regular n-gon of area a0 as a LAMMPS molecule template (for create_atoms ... mol)."""
+    radius = math.sqrt(2.0 * a0 / (n * math.sin(2.0 * math.pi / n)))
+    with open(path, "w") as out:
+        l0, sigma, theta0 = polygon_state(n, a0, calA0_relative)
+        out.write(f"# regular {n}-gon of area {a0} (MESOPHYLL tools/make_cells.py); after "
+                  f"create_atoms set d_sigma {sigma:.16g} d_l0 {l0:.16g} d_theta0 {theta0:.16g} "
+                  f"d_a0 {a0:.16g}\n\n")
+        out.write(f"{n} atoms\n{n} bonds\n{n} angles\n\nCoords\n\n")
+        for k in range(n):
+            phi = 2.0 * math.pi * k / n
+            out.write(f"{k + 1} {radius * math.cos(phi):.16g} {radius * math.sin(phi):.16g} 0\n")
+        out.write("\nTypes\n\n" + "".join(f"{k + 1} 1\n" for k in range(n)))
+        out.write("\nMolecules\n\n" + "".join(f"{k + 1} 1\n" for k in range(n)))
+        out.write("\nBonds\n\n" + "".join(f"{k + 1} 1 {k + 1} {(k + 1) % n + 1}\n" for k in range(n)))
+        out.write("\nAngles\n\n" + "".join(
+            f"{k + 1} 1 {(k - 1) % n + 1} {k + 1} {(k + 1) % n + 1}\n" for k in range(n)))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("output", help="data file to write")
+    p.add_argument("output", help="data file to write (a molecule template with --molecule)")
+    p.add_argument("--molecule", action="store_true",
+                   help="write one regular polygon as a molecule template instead")
     p.add_argument("--cells", type=int, default=4, help="number of cells (default 4)")
     p.add_argument("--vertices", type=int, default=32, help="vertices per cell (default 32)")
     p.add_argument("--a0", type=float, default=1.0, help="preferred area (default 1)")
@@ -102,6 +123,9 @@ def main():
         p.error("need cells >= 1, vertices >= 3 and positive a0, calA0, spacing")
     if args.bond_types < 1:
         p.error("need --bond-types >= 1")
+    if args.molecule:
+        write_molecule(args.output, args.vertices, args.a0, args.calA0)
+        return
     box, atoms, bonds, angles, state = build(args)
     write(args.output, box, atoms, bonds, angles, state,
           f"{args.cells} cells of {args.vertices} vertices (MESOPHYLL tools/make_cells.py)",
