@@ -206,6 +206,7 @@ void FixDPolyCells::gather_rings()
   const int n = ncells();
   vertex_counts.assign(n, 0);
   preferred_areas.assign(n, 0.0);
+  ring_order.assign(n, {});
 
   for (int c = 0; c < n; c++) {
     const auto &ring = members[cell_ids[c]];
@@ -217,6 +218,7 @@ void FixDPolyCells::gather_rings()
     int steps = 0;
     const VertexRecord *v = start;
     do {
+      ring_order[c].push_back(v->tag);
       if (v->preferred_area != start->preferred_area)
         error->all(FLERR,
                    "Fix dpoly/cells: cell {} has different a0 on vertices {} ({}) and {} ({})",

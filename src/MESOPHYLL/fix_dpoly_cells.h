@@ -60,6 +60,8 @@ class FixDPolyCells : public Fix {
     tagint prev, next;
   };
   const RingNeighbours &ring_neighbours(tagint atom) const { return rings.at(atom); }
+  // A cell's vertex IDs in ring order (counter-clockwise), as found when the rings were checked.
+  const std::vector<tagint> &ring(int cell) const { return ring_order[cell]; }
 
   // Adhesive bonds per vertex and contact numbers per cell (bond_style mesophyll/adhesion).
   const DPoly::AdhesionCounts &adhesion() const { return adhesion_counts; }
@@ -79,6 +81,7 @@ class FixDPolyCells : public Fix {
   std::vector<int> dense_index;                    // molecule ID -> cell, when IDs are dense
   std::unordered_map<tagint, int> sparse_index;    // otherwise
   std::unordered_map<tagint, RingNeighbours> rings;
+  std::vector<std::vector<tagint>> ring_order;
   DPoly::AdhesionCounts adhesion_counts;
   std::vector<int> vertex_counts;
   std::vector<double> preferred_areas, areas, perimeters, area_slopes;    // area_slope = dU/da

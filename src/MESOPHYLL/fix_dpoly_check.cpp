@@ -20,8 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -148,7 +148,7 @@ int FixDPolyCheck::check()
 
 namespace {
 struct RingPoint {
-  tagint tag, cell;
+  tagint tag;
   double x, y;
 };
 
@@ -170,26 +170,16 @@ int FixDPolyCheck::tangled_cells(tagint &first)
     if (!(atom->mask[i] & cells->groupbit)) continue;
     double xu[3];
     domain->unmap(atom->x[i], atom->image[i], xu);
-    mine.push_back({atom->tag[i], atom->molecule[i], xu[0], xu[1]});
+    mine.push_back({atom->tag[i], xu[0], xu[1]});
   }
-  std::map<tagint, const RingPoint *> by_tag;
+  std::unordered_map<tagint, const RingPoint *> by_tag;
   const std::vector<RingPoint> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   for (const auto &p : all) by_tag[p.tag] = &p;
 
-  std::map<tagint, std::vector<tagint>> rings;    // cell -> vertices in ring order
-  std::map<tagint, bool> visited;
-  for (const auto &entry : by_tag) {
-    if (visited[entry.first]) continue;
-    auto &ring = rings[entry.second->cell];
-    for (tagint u = entry.first; !visited[u]; u = cells->ring_neighbours(u).next) {
-      visited[u] = true;
-      ring.push_back(u);
-    }
-  }
   int tangled = 0;
   first = 0;
-  for (const auto &entry : rings) {
-    const auto &ring = entry.second;
+  for (int cell = 0; cell < cells->ncells(); cell++) {
+    const std::vector<tagint> &ring = cells->ring(cell);
     const int n = (int) ring.size();
     bool crossed = false;
     for (int i = 0; i < n && !crossed; i++)
@@ -203,7 +193,7 @@ int FixDPolyCheck::tangled_cells(tagint &first)
         crossed = segments_cross(pa, pb, pc, pd);
       }
     if (crossed) {
-      if (!tangled) first = entry.first;
+      if (!tangled) first = cells->cell_id(cell);
       tangled++;
     }
   }

@@ -133,28 +133,16 @@ void FixMesophyllGrow::grow()
     const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
     if (j < 0)
       error->one(FLERR, "Fix mesophyll/grow: ring neighbour of vertex {} missing", atom->tag[i]);
-    mine.push_back({atom->tag[i], atom->molecule[i],
-                    std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]), state.preferred_angle[i]});
+    mine.push_back(
+        {atom->tag[i], std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]), state.preferred_angle[i]});
   }
-  std::vector<VertexGrowth> all = DPoly::gather_on_all_ranks(std::move(mine), world);
-  std::sort(all.begin(), all.end(), [](const VertexGrowth &u, const VertexGrowth &v) {
-    return u.tag < v.tag;
-  });
+  const std::vector<VertexGrowth> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   std::unordered_map<tagint, const VertexGrowth *> vertex;
   for (const auto &v : all) vertex[v.tag] = &v;
 
   std::unordered_map<tagint, double> length_growth, new_angle;
-  std::unordered_map<tagint, bool> visited;
   void_vertices = cells_above_max = 0;
-  for (const auto &v : all) {    // each ring once, from its smallest tag
-    if (visited[v.tag]) continue;
-    std::vector<tagint> ring;
-    for (tagint u = v.tag; !visited[u]; u = cells->ring_neighbours(u).next) {
-      visited[u] = true;
-      ring.push_back(u);
-    }
-    grow_ring(ring, vertex, length_growth, new_angle);
-  }
+  for (int c = 0; c < cells->ncells(); c++) grow_ring(c, vertex, length_growth, new_angle);
 
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -168,13 +156,12 @@ void FixMesophyllGrow::grow()
   steps++;
 }
 
-void FixMesophyllGrow::grow_ring(const std::vector<tagint> &ring,
-                                 std::unordered_map<tagint, const VertexGrowth *> &vertex,
+void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexGrowth *> &vertex,
                                  std::unordered_map<tagint, double> &length_growth,
                                  std::unordered_map<tagint, double> &new_angle)
 {
+  const std::vector<tagint> &ring = cells->ring(c);
   const int n = (int) ring.size();
-  const int c = cells->cell_index(vertex[ring[0]]->cell);
   const double p = cells->perimeter(c), a = cells->area(c);
   const double dl_std = 0.5 * (p / a) * delta_a;
   const double shape = p * p / (4.0 * MathConst::MY_PI * a);

@@ -38,12 +38,11 @@ class FixMesophyllGrow : public Fix {
  private:
   // What every rank needs of a vertex to find the void runs of its ring.
   struct VertexGrowth {
-    tagint tag, cell;
+    tagint tag;
     double segment;            // current length of the segment to the next vertex
     double preferred_angle;    // theta0 before this step
   };
-  void grow_ring(const std::vector<tagint> &ring,
-                 std::unordered_map<tagint, const VertexGrowth *> &vertex,
+  void grow_ring(int cell, std::unordered_map<tagint, const VertexGrowth *> &vertex,
                  std::unordered_map<tagint, double> &length_growth,
                  std::unordered_map<tagint, double> &new_angle);
 
