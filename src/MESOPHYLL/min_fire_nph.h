@@ -1,0 +1,58 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef MINIMIZE_CLASS
+// clang-format off
+MinimizeStyle(fire/nph,MinFireNph);
+// clang-format on
+#else
+
+#ifndef LMP_MIN_FIRE_NPH_H
+#define LMP_MIN_FIRE_NPH_H
+
+#include "min.h"
+
+namespace LAMMPS_NS {
+
+// FIRE damped dynamics in which the box lengths that fix box/relax exposes are dynamical
+// degrees of freedom too (the NPH-FIRE of Treado et al., S3). It minimizes the enthalpy
+// U + P0 V from forces alone, so it keeps converging where line searches on the enthalpy stall
+// at round-off. Without fix box/relax it is plain FIRE at fixed box.
+class MinFireNph : public Min {
+ public:
+  MinFireNph(class LAMMPS *);
+  ~MinFireNph() override;
+
+  void init() override;
+  void setup_style() override;
+  void reset_vectors() override;
+  int iterate(int) override;
+  int modify_param(int, char **) override;
+
+ private:
+  double boxmass_scale;    // box mass relative to that of an affine dilation
+
+  double dt, dtmax, dtmin, alpha;
+  bigint last_negative;
+  double *velocity;    // per-atom FIRE velocities, kept by fix_minimize so they migrate
+
+  // box degrees of freedom, as changes q of the box lengths (a length, like the atom dof)
+  double *box_length;      // box length each dof dilates, at setup
+  double *box_mass;        // kinetic mass of each dof
+  double *box_velocity;    // dq/dt
+  double *box_step;        // scratch: dq/box_length, what fix box/relax min_step() takes
+
+  double global_sum(double) const;
+  double vdotf() const;
+  void zero_velocities();
+  void mix_velocities();
+  double displacement_time() const;
+  void move(double);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
