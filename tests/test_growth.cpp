@@ -29,8 +29,8 @@ std::string octagon_and_square()
 std::unique_ptr<LammpsSession> grown(const std::string &options, MPI_Comm comm = MPI_COMM_WORLD)
 {
   auto s = std::make_unique<LammpsSession>(comm);
-  s->run(contact_commands(octagon_and_square()) + "fix grow all mesophyll/grow runs yes " +
-         options + "\nrun 0 post no");
+  s->run(contact_commands(octagon_and_square()) +
+         "fix grow all mesophyll/grow runs yes box fixed " + options + "\nrun 0 post no");
   return s;
 }
 
@@ -154,6 +154,26 @@ TEST(Growth, AboveShapeLimitGrowthIsIsometricOrNone)
               "paper rule");
 }
 
+// phi at each growth step is the packing at the minimum just reached; delta_phi_plus sums its
+// rises. The box changes without moving the cells, so only phi changes.
+TEST(Growth, CompactionSumsOnlyTheRisesOfPhi)
+{
+  const double cell_area = 2.0 * sqrt(2.0) + 1.0;    // octagon + square
+  auto s = grown("");
+  const double phi1 = cell_area / s->thermo("vol");
+  EXPECT_NEAR(s->thermo("f_grow[4]"), phi1, 1e-14);
+  EXPECT_EQ(s->thermo("f_grow[5]"), 0.0);
+
+  s->run("change_box all x scale 0.9 y scale 0.9\nrun 0 post no");
+  const double phi2 = phi1 / 0.81;
+  EXPECT_NEAR(s->thermo("f_grow[4]"), phi2, 1e-13);
+  EXPECT_NEAR(s->thermo("f_grow[5]"), phi2 - phi1, 1e-13);
+
+  s->run("change_box all x scale 1.5 y scale 1.5\nrun 0 post no");
+  EXPECT_NEAR(s->thermo("f_grow[4]"), phi2 / 2.25, 1e-13);
+  EXPECT_NEAR(s->thermo("f_grow[5]"), phi2 - phi1, 1e-13) << "a fall of phi adds nothing";
+}
+
 TEST(Growth, ParallelRunMatchesSerialRun)
 {
   if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
@@ -192,9 +212,18 @@ TEST_F(BadGrowth, RefusesNonsense)
   EXPECT_NE(error_of("fix g all mesophyll/grow rules mine").find("rules must be 'code' or 'paper'"),
             std::string::npos);
   EXPECT_NE(error_of("fix g all mesophyll/grow speed 2").find("keyword: speed"), std::string::npos);
+  EXPECT_NE(error_of("fix g all mesophyll/grow box open").find("box must be 'relax' or 'fixed'"),
+            std::string::npos);
   EXPECT_NE(error_of("fix g all mesophyll/grow\nfix b all mesophyll/break 5")
                 .find("define the breaking fix first"),
             std::string::npos);
+}
+
+TEST_F(BadGrowth, NeedsBoxRelaxUnlessToldTheBoxIsFixed)
+{
+  const std::string msg = error_of("fix g all mesophyll/grow");
+  EXPECT_NE(msg.find("needs fix box/relax"), std::string::npos) << msg;
+  EXPECT_EQ(error_of("fix g all mesophyll/grow box fixed"), "");
 }
 
 TEST_F(BadGrowth, NeedsTheCells)

@@ -94,11 +94,15 @@ TEST(VertexObservables, RegularPolygonFromMoleculeTemplate)
         "fix cells all dpoly/cells\ncompute vertex all dpoly/vertex\n"
         "compute theta all reduce max c_vertex[1]\ncompute theta_min all reduce min c_vertex[1]\n"
         "compute length all reduce max c_vertex[2]\n"
-        "thermo_style custom step pe c_theta c_theta_min c_length f_cells[2]\nrun 0 post no");
+        "variable next_error atom abs(c_vertex[3]-((id%12)+1))\n"    // the template runs CCW
+        "compute next_error all reduce max v_next_error\n"
+        "thermo_style custom step pe c_theta c_theta_min c_length f_cells[2] c_next_error\n"
+        "run 0 post no");
   const int n = 12;
   const double radius = sqrt(2.0 / (n * sin(2 * PI / n)));
   EXPECT_NEAR(s.thermo("c_theta"), 2 * PI / n, 1e-12);
   EXPECT_NEAR(s.thermo("c_theta_min"), 2 * PI / n, 1e-12);
   EXPECT_NEAR(s.thermo("c_length"), 2 * radius * sin(PI / n), 1e-12);
   EXPECT_NEAR(s.thermo("f_cells[2]"), 1.0, 1e-12);
+  EXPECT_EQ(s.thermo("c_next_error"), 0.0) << "column 3 names the next vertex along the ring";
 }

@@ -22,7 +22,7 @@ ComputeDPolyVertex::ComputeDPolyVertex(LAMMPS *lmp, int narg, char **arg) :
   if (narg != 3) error->all(FLERR, "Compute dpoly/vertex takes no arguments, got {}", narg - 3);
   if (!atom->molecule_flag) error->all(FLERR, "Compute dpoly/vertex needs molecule IDs and angles");
   peratom_flag = 1;
-  size_peratom_cols = 2;    // turning angle, segment length
+  size_peratom_cols = 3;    // turning angle, segment length, ID of the next vertex
 }
 
 ComputeDPolyVertex::~ComputeDPolyVertex()
@@ -41,7 +41,7 @@ void ComputeDPolyVertex::compute_peratom()
   }
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
-    values[i][0] = values[i][1] = 0.0;
+    values[i][0] = values[i][1] = values[i][2] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     if (links.count != 1) continue;    // not a ring vertex
@@ -56,10 +56,11 @@ void ComputeDPolyVertex::compute_peratom()
     const double out[2] = {x[jn][0] - x[i][0], x[jn][1] - x[i][1]};
     values[i][0] = DPoly::turning_angle(in, out);
     values[i][1] = sqrt(out[0] * out[0] + out[1] * out[1]);
+    values[i][2] = (double) links.next;    // lets a dump list each ring in order
   }
 }
 
 double ComputeDPolyVertex::memory_usage()
 {
-  return sizeof(double) * 2.0 * nmax;
+  return sizeof(double) * size_peratom_cols * nmax;
 }

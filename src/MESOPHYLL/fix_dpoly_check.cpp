@@ -29,7 +29,7 @@ using namespace FixConst;
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), target_pressure(0.0), pressure_tolerance(1.0e-6), stop_on_failure(0),
-    minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0}, cells(nullptr)
+    minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, cells(nullptr)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -56,7 +56,7 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
     iarg += 2;
   }
   vector_flag = 1;
-  size_vector = 5;
+  size_vector = 7;
   extvector = 0;
   global_freq = 1;
 }
@@ -117,6 +117,8 @@ int FixDPolyCheck::check()
   last[2] = pressure_error;
   last[3] = inverted;
   last[4] = tangled;
+  last[5] = min->niter;
+  last[6] = min->neval;
 
   std::string problems;
   if (!converged)

@@ -35,7 +35,8 @@ class FixDPolyCheck : public Fix {
   double pressure_tolerance;
   int stop_on_failure;
   bigint minima;
-  double last[5];    // converged, force norm, |P - P0|/P0, inverted cells, tangled cells
+  // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force evaluations
+  double last[7];
   class FixDPolyCells *cells;
   int tangled_cells(tagint &first);
 };

@@ -28,7 +28,8 @@ using namespace FixConst;
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
     theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1), scale_diameters(1),
-    after_runs(0), steps(0), void_vertices(0), cells_above_max(0), cells(nullptr)
+    after_runs(0), need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0),
+    packing_last(-1.0), compaction(0.0), cells(nullptr)
 {
   bool shape_max_given = false;
   int iarg = 3;
@@ -71,13 +72,22 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
       scale_diameters = utils::logical(FLERR, value, false, lmp);
     else if (strcmp(key, "runs") == 0)
       after_runs = utils::logical(FLERR, value, false, lmp);
-    else
+    else if (strcmp(key, "box") == 0) {
+      if (strcmp(value, "relax") == 0)
+        need_box_relax = 1;
+      else if (strcmp(value, "fixed") == 0)
+        need_box_relax = 0;
+      else
+        error->all(FLERR, "Fix mesophyll/grow box must be 'relax' or 'fixed', got '{}'", value);
+    } else
       error->all(FLERR, "Unknown fix mesophyll/grow keyword: {}", key);
     iarg += 2;
   }
 
   vector_flag = 1;
-  size_vector = 3;    // growth steps, void-facing vertices, cells at or above calA_max
+  // growth steps, void-facing vertices, cells at or above calA_max, phi at the last minimum,
+  // cumulative compaction delta_phi_plus
+  size_vector = 5;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;
@@ -102,6 +112,13 @@ void FixMesophyllGrow::init()
                  "breaking fix first, so that bonds break before cells grow",
                  id, modify->fix[m]->id);
   }
+  // the protocol minimizes the enthalpy at constant pressure; growing in a fixed box is a
+  // different experiment, and must be asked for
+  if (need_box_relax && modify->get_fix_by_style("^box/relax").empty())
+    error->all(FLERR,
+               "Fix mesophyll/grow {} needs fix box/relax (the growth protocol relaxes the box at "
+               "constant pressure); use 'box fixed' to grow in a fixed box",
+               id);
 }
 
 void FixMesophyllGrow::post_run()
@@ -139,6 +156,8 @@ void FixMesophyllGrow::grow()
   const std::vector<VertexGrowth> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   std::unordered_map<tagint, const VertexGrowth *> vertex;
   for (const auto &v : all) vertex[v.tag] = &v;
+
+  record_packing();
 
   std::unordered_map<tagint, double> length_growth, new_angle;
   void_vertices = cells_above_max = 0;
@@ -218,23 +237,49 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
   }
 }
 
+/* ----------------------------------------------------------------------
+   packing fraction phi = sum of cell areas / box area at the minimum just reached, and the
+   cumulative compaction delta_phi_plus = sum of the increases of phi from minimum to minimum
+------------------------------------------------------------------------- */
+
+void FixMesophyllGrow::record_packing()
+{
+  double cell_area = 0.0;
+  for (int c = 0; c < cells->ncells(); c++) cell_area += cells->area(c);
+  const double packing = cell_area / (domain->xprd * domain->yprd);
+  if (packing_last >= 0.0) compaction += std::max(0.0, packing - packing_last);
+  packing_last = packing;
+}
+
 double FixMesophyllGrow::compute_vector(int n)
 {
-  if (n == 0) return steps;
-  if (n == 1) return void_vertices;
-  return cells_above_max;
+  switch (n) {
+    case 0:
+      return steps;
+    case 1:
+      return void_vertices;
+    case 2:
+      return cells_above_max;
+    case 3:
+      return packing_last;
+    default:
+      return compaction;
+  }
 }
 
 void FixMesophyllGrow::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  double state = (double) steps;
-  int size = sizeof(double);
+  double state[3] = {(double) steps, packing_last, compaction};
+  int size = sizeof(state);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(&state, sizeof(double), 1, fp);
+  fwrite(state, sizeof(double), 3, fp);
 }
 
 void FixMesophyllGrow::restart(char *buf)
 {
-  steps = (bigint) * ((double *) buf);
+  const double *state = (const double *) buf;
+  steps = (bigint) state[0];
+  packing_last = state[1];
+  compaction = state[2];
 }

@@ -46,12 +46,17 @@ class FixMesophyllGrow : public Fix {
                  std::unordered_map<tagint, double> &length_growth,
                  std::unordered_map<tagint, double> &new_angle);
 
+  void record_packing();
+
   double delta_a, lambda, c_length, c_bending, theta0_min, shape_max;
   int grow_above_max;    // above shape_max: isometric growth (authors' code) or none (paper)
   int scale_diameters;
   int after_runs;
+  int need_box_relax;
   bigint steps;
   int void_vertices, cells_above_max;
+  double packing_last;    // phi at the last minimum (-1 before the first)
+  double compaction;      // delta_phi_plus
   class FixDPolyCells *cells;
 };
 
