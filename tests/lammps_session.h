@@ -64,6 +64,14 @@ class LammpsSession {
     return result;
   }
 
+  // The value of a string-like variable (index, string, ...), "" if there is none.
+  std::string string_variable(const std::string &name)
+  {
+    const char *value =
+        static_cast<const char *>(lammps_extract_variable(handle, name.c_str(), nullptr));
+    return value ? value : "";
+  }
+
   int natoms() { return (int) lammps_get_natoms(handle); }
 
   // Per-atom values ordered by atom ID, on every rank.
