@@ -3,6 +3,8 @@
 
 #include "gtest/gtest.h"
 
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 using namespace test;
@@ -43,8 +45,20 @@ TEST(Check, WrongPressureIsReported)
 TEST(Check, UnfinishedMinimizationWarnsOrStops)
 {
   if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
-  auto warned = relaxed_tissue("pressure 1.0e-3", "minimize 0.0 1.0e-10 5 50");
+  const std::string log = scratch("unfinished.log");
+  auto warned = relaxed_tissue("pressure 1.0e-3", "log " + log + "\nminimize 0.0 1.0e-10 5 50");
   EXPECT_EQ(warned->thermo("f_check[1]"), 0.0);
+  EXPECT_EQ(warned->thermo("f_check[6]"), 5.0) << "iterations";
+  EXPECT_GE(warned->thermo("f_check[7]"), 5.0) << "force evaluations";
+  warned->run("log none");
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // the log line names the failure even after LAMMPS has stopped printing warnings
+  EXPECT_NE(text.find("fix dpoly/check: minimum 1 at step 5: max iterations, force norm"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("; FAILED; the minimizer stopped without converging (max iterations)"),
+            std::string::npos);
 
   LammpsSession s;
   const std::string msg = s.try_run(

@@ -131,11 +131,12 @@ int FixDPolyCheck::check()
   if (tangled)
     problems += fmt::format("; {} rings cross themselves (first: cell {})", tangled, first_tangled);
 
+  // the log line carries the problems too: LAMMPS stops printing warnings after its limit
   if (comm->me == 0)
-    utils::logmesg(lmp, "fix dpoly/check: minimum {} at step {}: {}, force norm {:.6g}{}\n", minima,
-                   update->ntimestep, min->stopstr, force_norm,
-                   target_pressure > 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error)
-                                         : "");
+    utils::logmesg(lmp, "fix dpoly/check: minimum {} at step {}: {}, force norm {:.6g}{}{}\n",
+                   minima, update->ntimestep, min->stopstr, force_norm,
+                   target_pressure > 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error) : "",
+                   problems.empty() ? "" : "; FAILED" + problems);
   if (problems.empty()) return 0;
   const std::string message =
       fmt::format("Fix dpoly/check: minimum {} at step {}{}", minima, update->ntimestep, problems);
