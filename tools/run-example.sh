@@ -1,35 +1,56 @@
 #!/usr/bin/env bash
 # Runs an example of the package in a scratch copy under the build folder and says where its
-# log and outputs are.   tools/run-example.sh [--build-dir DIR] [--np N] [EXAMPLE [INPUT]]
+# log and outputs are; draws a development run's PNGs (tools/plot_mesophyll.py).
+#   tools/run-example.sh [--build-dir DIR] [--np N] [--var NAME VALUE ...] [EXAMPLE [INPUT]]
+# Default: the paper's main run, examples/mesophyll/in.mesophyll, on as many ranks as cores (<= 2).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir="$here/build"
-np=1
+np=$(( $(nproc) >= 2 ? 2 : 1 ))
+vars=()
 positional=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir=$(realpath -m "$2"); shift ;;
     --np) np=$2; shift ;;
-    -h|--help) sed -n '2,3p' "$0"; exit 0 ;;
+    --var) vars+=(-var "$2" "$3"); shift 2 ;;
+    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
     *) positional+=("$1") ;;
   esac
   shift
 done
-example=${positional[0]:-polygons}
-input=${positional[1]:-in.relax_cells}
+example=${positional[0]:-mesophyll}
+input=${positional[1]:-in.$example}
 src="$here/examples/$example"
 [ -f "$src/$input" ] || { echo "run-example.sh: no input $src/$input" >&2; exit 2; }
 [ -x "$build_dir/lmp" ] || { echo "run-example.sh: no $build_dir/lmp; run tools/setup.sh first" >&2; exit 2; }
 
+command -v mpirun >/dev/null || np=1
 work="$build_dir/examples/$example"
-rm -rf "$work"; mkdir -p "$work"; cp -r "$src/." "$work/"
+rm -rf "$work"; mkdir -p "$work"; cp -rL "$src/." "$work/"
 cd "$work"
 log="log.$(basename "$input" | sed 's/^in\.//')"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if [ "$np" -gt 1 ]; then
-  mpirun -np "$np" --oversubscribe "$build_dir/lmp" -in "$input" -log "$log"
+  mpirun -np "$np" --oversubscribe "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
 else
-  "$build_dir/lmp" -in "$input" -log "$log"
+  "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
 fi
 echo
-echo "Example '$example/$input' finished. Log: $work/$log"
+echo "Example '$example/$input' finished on $np rank(s). Log: $work/$log"
+
+# a development run leaves growth.N*.txt and cells.N*.dump: draw them with Debian's matplotlib
+python=""
+for candidate in python3 /usr/bin/python3; do
+  if "$candidate" -c 'import matplotlib, numpy' 2>/dev/null; then python=$candidate; break; fi
+done
+for growth in growth.N*.txt; do
+  [ -f "$growth" ] || continue
+  cells=${growth#growth.}; cells=${cells%.txt}
+  if [ -z "$python" ]; then
+    echo "No python3 with matplotlib and numpy (Debian: python3-matplotlib python3-numpy): no plots."
+    break
+  fi
+  "$python" "$here/tools/plot_mesophyll.py" "$growth" "cells.$cells.dump" --out "mesophyll_$cells"
+  echo "Growth record: $work/$growth; plots: $work/mesophyll_${cells}_{shape,packing,snapshots}.png"
+done

@@ -159,5 +159,9 @@ ccache --show-stats 2>/dev/null | grep -Ei 'hit|miss' | head -n 4 || true
 echo "LAMMPS with MESOPHYLL: $build_dir/lmp"
 
 if [ "$run_example" = 1 ]; then
-  "$here/tools/run-example.sh" --build-dir "$build_dir"
+  if [ "$mpi" = ON ]; then
+    "$here/tools/run-example.sh" --build-dir "$build_dir"
+  else
+    "$here/tools/run-example.sh" --build-dir "$build_dir" --np 1
+  fi
 fi
