@@ -9,11 +9,11 @@
 #include "bond_mesophyll_adhesion.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_topology.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "force.h"
 #include "memory.h"
-#include "special.h"
 #include "update.h"
 
 #include <Random123/philox.h>
@@ -164,7 +164,7 @@ void FixMesophyllBreak::break_bonds()
   store_local_output(broken);    // before Special, whose communication drops the ghost atoms
   if (!broken.empty()) {
     remove_bonds(broken);
-    rebuild_special_lists();
+    DPoly::rebuild_special_and_ghosts(lmp);
   }
   std::vector<AdhesiveBond> survivors;
   size_t next_broken = 0;
@@ -205,21 +205,6 @@ void FixMesophyllBreak::remove_bonds(const std::vector<Broken> &broken)
     }
   }
   atom->nbonds -= (bigint) broken.size();
-}
-
-// Special::build() communicates irregularly and drops the ghost atoms; the minimizer's clean-up
-// still checks bonds against ghosts, so bring them back as a run's setup would.
-void FixMesophyllBreak::rebuild_special_lists()
-{
-  Special special(lmp);
-  special.build();
-  if (domain->triclinic) domain->x2lamda(atom->nlocal);
-  domain->pbc();
-  domain->reset_box();
-  comm->setup();
-  comm->exchange();
-  comm->borders();
-  if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
 }
 
 // Each rank lists the broken bonds whose first atom it owns: atom1, atom2, step, r/s, how.

@@ -58,7 +58,6 @@ class FixMesophyllBreak : public Fix {
   std::vector<Broken> decide(const std::vector<DPoly::AdhesiveBond> &bonds);
   bool at_junction_edge(const DPoly::AdhesiveBond &b, const DPoly::AdhesionCounts &counts) const;
   void remove_bonds(const std::vector<Broken> &broken);
-  void rebuild_special_lists();
   void store_local_output(const std::vector<Broken> &broken);
   double **local_rows;
   class BondMesophyllAdhesion *adhesion;
