@@ -82,6 +82,14 @@ class LammpsSession {
     return data;
   }
 
+  // Per-atom integer values (molecule, type, ...) ordered by atom ID, on every rank.
+  std::vector<int> gather_int(const char *name, int count)
+  {
+    std::vector<int> data((size_t) natoms() * count);
+    lammps_gather(handle, name, 0 /* int */, count, data.data());
+    return data;
+  }
+
   void scatter(const char *name, int count, std::vector<double> &data)
   {
     lammps_scatter(handle, name, 1 /* double */, count, data.data());

@@ -1,0 +1,65 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(dpoly/refine,FixDPolyRefine);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_DPOLY_REFINE_H
+#define LMP_FIX_DPOLY_REFINE_H
+
+#include "fix.h"
+
+#include <map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Resolution control of the deformable polygons (model.md sections 4 and 6): after each
+// minimization, split every ring segment longer than a given number of vertex radii by a new
+// vertex at its midpoint, so that growing rings do not get coarse. The relaxed ring stays
+// relaxed: the new vertex is straight (theta0 = 0) and the two halves keep the segment's tension.
+class FixDPolyRefine : public Fix {
+ public:
+  FixDPolyRefine(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void post_run() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // Collective: split the long segments now; returns the number of vertices added.
+  int refine();
+
+ private:
+  // A segment to split, as every rank sees it.
+  struct Split {
+    tagint first, second;    // its vertices, in ring order
+    tagint cell;
+    tagint added;    // ID of the new vertex
+    double length, preferred_length;
+  };
+  std::vector<Split> find_long_segments();
+  void choose_within_cap(std::vector<Split> &splits);
+  void insert_vertices(const std::vector<Split> &splits);
+  void rewire_topology(const std::vector<Split> &splits);
+
+  double radii;     // split segments longer than this many vertex radii
+  double cap;       // at most cap x the vertex count a cell had at the first refinement
+  int void_only;    // split only segments between two vertices without adhesive bonds
+  int after_runs;
+  bigint steps, added_total;
+  int added_last;
+  std::map<tagint, int> initial_vertices;    // per cell, at the first refinement
+  class FixDPolyCells *cells;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
