@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Benchmark the growth protocol: wall time and minimizer iterations per growth step.
+
+    bench/development.py [--lmp build/lmp] [--cells 16 64] [--ranks 1 2] [--steps 11]
+                         [--csv bench/results/development.csv] [--mpirun mpirun]
+
+Runs examples/mesophyll/in.mesophyll (default parameter set, min_style fire/nph) for each number
+of cells and MPI ranks, one after the other, and writes one CSV row per growth step: cells, ranks,
+step, phi_patch, mean calA, iterations, force evaluations, minimization wall time (LAMMPS's "Loop
+time"). Prints a summary per run with the published code's figures beside it. Not a test: run it
+on an otherwise idle machine and record the machine with the figures. Standard library only.
+"""
+import argparse
+import csv
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+# The issue's figures for the published code (FIRE, N = 16, this kind of machine)
+PUBLISHED = "published code, N = 16: 3e3 -> 1e5 FIRE iterations per growth step, " \
+            "about 5.4 min for the first 11 growth steps (phi 0.93 -> 0.49)"
+
+LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps")
+EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
+
+
+def run(args, cells, ranks, workdir):
+    example = os.path.join(ROOT, "examples", "mesophyll")
+    shutil.copytree(example, workdir, dirs_exist_ok=True, symlinks=False)
+    command = [args.lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "steps",
+               str(args.steps), "-log", "log.bench", "-screen", "none"]
+    if ranks > 1:
+        command = args.mpirun.split() + ["-np", str(ranks)] + command
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    start = time.perf_counter()
+    subprocess.run(command, cwd=workdir, env=env, check=True)
+    total = time.perf_counter() - start
+
+    with open(os.path.join(workdir, "log.bench")) as f:
+        log = f.read()
+    loops = [float(m.group(1)) for m in LOOP.finditer(log)]
+    evals = [(int(m.group(1)), int(m.group(2))) for m in EVALS.finditer(log)]
+    rows = []
+    with open(os.path.join(workdir, f"growth.N{cells}.txt")) as f:
+        names = f.readline().lstrip("#").split()
+        for k, line in enumerate(f):
+            rec = dict(zip(names, line.split()))
+            rows.append({"cells": cells, "ranks": ranks, "step": int(rec["step"]),
+                         "phi_patch": float(rec["phi_patch"]), "calA": float(rec["calA"]),
+                         "iterations": evals[k][0], "force_evaluations": evals[k][1],
+                         "wall_s": loops[k]})
+    return rows, total
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--cells", type=int, nargs="+", default=[16, 64])
+    p.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
+    p.add_argument("--steps", type=int, default=11)
+    p.add_argument("--csv", default=os.path.join(HERE, "results", "development.csv"))
+    p.add_argument("--mpirun", default="mpirun")
+    args = p.parse_args()
+    args.lmp = os.path.abspath(args.lmp)
+
+    print(f"machine: {platform.node()}, {os.cpu_count()} cores, {platform.processor() or platform.machine()}")
+    print(f"{'cells':>5} {'ranks':>5} {'steps':>5} {'phi_patch':>17} {'iterations/step':>22} "
+          f"{'minimize s':>10} {'total s':>8} {'us/(iter vertex)':>16}")
+    all_rows = []
+    for cells in args.cells:
+        for ranks in args.ranks:
+            with tempfile.TemporaryDirectory() as workdir:
+                rows, total = run(args, cells, ranks, workdir)
+            all_rows += rows
+            iters = [r["iterations"] for r in rows]
+            wall = sum(r["wall_s"] for r in rows)
+            per = 1e6 * wall / (sum(iters) * 32 * cells)
+            print(f"{cells:5d} {ranks:5d} {len(rows):5d} {rows[0]['phi_patch']:7.3f} -> "
+                  f"{rows[-1]['phi_patch']:6.3f} {min(iters):7d} .. {max(iters):6d} "
+                  f"(mean {sum(iters) // len(iters):6d}) {wall:10.1f} {total:8.1f} {per:16.3f}")
+    print(PUBLISHED)
+
+    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
+    with open(args.csv, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(all_rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(all_rows)
+    print(f"wrote {args.csv}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
