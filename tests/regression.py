@@ -2,12 +2,15 @@
 """Rerun an example and compare its thermo output with the example's reference log.
 
     regression.py --lmp BUILD/lmp --example examples/NAME --input in.X --np N [--mpirun CMD]
-                  [--rtol R] [--atol A] [--update]
+                  [--rtol R] [--atol A] [--tolerance COLUMN=RTOL,ATOL ...] [--var NAME VALUE ...]
+                  [--update] [--expect-difference]
 
 The reference is examples/NAME/log.<date>.<X>.g++.<N> (the newest, if several). Every thermo
 row of every run must match column by column within |new - ref| <= atol + rtol*|ref|, with the
-same columns and rows. --update runs the example and writes a new reference log instead.
-Standard library only.
+same columns and rows; --tolerance sets a column's own pair. --update runs the example and writes
+a new reference log instead. --var passes a variable to LAMMPS; with --expect-difference the
+check passes only if the run differs from the reference (to show that a moved trajectory is
+caught). Standard library only.
 """
 import argparse
 import glob
@@ -39,8 +42,9 @@ def thermo_blocks(path):
     return blocks
 
 
-def compare(reference, new, rtol, atol):
-    """Return a list of differences, empty if the logs agree."""
+def compare(reference, new, rtol, atol, per_column=None):
+    """Return a list of differences, empty if the logs agree. per_column: {name: (rtol, atol)}."""
+    per_column = per_column or {}
     ref_blocks, new_blocks = thermo_blocks(reference), thermo_blocks(new)
     problems = []
     if len(ref_blocks) != len(new_blocks):
@@ -53,7 +57,8 @@ def compare(reference, new, rtol, atol):
             problems.append(f"table {b}: {len(new_rows)} rows, reference has {len(ref_rows)}")
         for ref_row, new_row in zip(ref_rows, new_rows):
             for col, ref, val in zip(ref_cols, ref_row, new_row):
-                if abs(val - ref) > atol + rtol * abs(ref):
+                col_rtol, col_atol = per_column.get(col, (rtol, atol))
+                if abs(val - ref) > col_atol + col_rtol * abs(ref):
                     problems.append(f"table {b} step {int(ref_row[0])} {col}: {val!r} vs "
                                     f"reference {ref!r}")
     return problems
@@ -67,6 +72,8 @@ def reference_log(example, name, np):
 def run_example(args, workdir, log_name):
     shutil.copytree(args.example, workdir, dirs_exist_ok=True)
     command = [args.lmp, "-in", args.input, "-log", log_name, "-screen", "none"]
+    for name, value in args.var:
+        command += ["-var", name, value]
     if args.np > 1:
         command = args.mpirun.split() + ["-np", str(args.np), "--oversubscribe"] + command
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -85,10 +92,19 @@ def main():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--rtol", type=float, default=1e-8)
     p.add_argument("--atol", type=float, default=1e-12)
+    p.add_argument("--tolerance", action="append", default=[], metavar="COLUMN=RTOL,ATOL",
+                   help="a column's own tolerances")
+    p.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     p.add_argument("--update", action="store_true", help="write a new reference log")
+    p.add_argument("--expect-difference", action="store_true",
+                   help="pass only if the run differs from the reference")
     args = p.parse_args()
     args.lmp = os.path.abspath(args.lmp)
     name = args.input[3:] if args.input.startswith("in.") else args.input
+    per_column = {}
+    for item in args.tolerance:
+        column, _, pair = item.partition("=")
+        per_column[column] = tuple(float(v) for v in pair.split(","))
 
     with tempfile.TemporaryDirectory() as workdir:
         new_log = run_example(args, workdir, "log.new")
@@ -103,8 +119,15 @@ def main():
         reference = reference_log(args.example, name, args.np)
         if reference is None:
             sys.exit(f"regression: no reference log for {name} on {args.np} ranks in {args.example}")
-        problems = compare(reference, new_log, args.rtol, args.atol)
+        problems = compare(reference, new_log, args.rtol, args.atol, per_column)
         rows = sum(len(rows) for _, rows in thermo_blocks(reference))
+    if args.expect_difference:
+        if not problems:
+            sys.exit(f"regression: {name} with {args.var} still matches {reference}: a moved "
+                     "trajectory went unnoticed")
+        print(f"{name} with {args.var} differs from {os.path.basename(reference)} as it must "
+              f"({len(problems)} differences, first: {problems[0]})")
+        return
     if problems:
         print(f"{len(problems)} differences from {reference}:")
         print("\n".join(problems[:40]))
