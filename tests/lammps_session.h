@@ -72,6 +72,17 @@ class LammpsSession {
     return value ? value : "";
   }
 
+  // A compute's global array, row by row (rows x cols values), on every rank.
+  std::vector<double> global_array(const char *compute, int nrows, int ncols)
+  {
+    auto **rows = static_cast<double **>(
+        lammps_extract_compute(handle, compute, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY));
+    if (!rows) throw std::runtime_error(std::string("no global array from compute ") + compute);
+    std::vector<double> values;
+    for (int r = 0; r < nrows; r++) values.insert(values.end(), rows[r], rows[r] + ncols);
+    return values;
+  }
+
   int natoms() { return (int) lammps_get_natoms(handle); }
 
   // Per-atom values ordered by atom ID, on every rank.

@@ -35,14 +35,14 @@ struct VertexRecord {
 }    // namespace
 
 FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), area_stiffness(1.0), area_energy(0.0)
+    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0)
 {
   int iarg = 3;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "eps_a") == 0) {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix dpoly/cells eps_a", error);
-      area_stiffness = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (area_stiffness < 0.0)
+      area_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (area_eps < 0.0)
         error->all(FLERR, "Fix dpoly/cells eps_a must be >= 0, got {}", arg[iarg + 1]);
       iarg += 2;
     } else
@@ -377,8 +377,8 @@ void FixDPolyCells::apply_area_forces(int vflag)
   area_energy = 0.0;
   for (int c = 0; c < ncells(); c++) {
     const double strain = areas[c] / preferred_areas[c] - 1.0;
-    area_energy += 0.5 * area_stiffness * strain * strain;
-    area_slopes[c] = area_stiffness * strain / preferred_areas[c];
+    area_energy += 0.5 * area_eps * strain * strain;
+    area_slopes[c] = area_eps * strain / preferred_areas[c];
   }
 
   double **f = atom->f;

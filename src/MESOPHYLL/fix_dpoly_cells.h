@@ -53,6 +53,7 @@ class FixDPolyCells : public Fix {
   double area(int cell) const { return areas[cell]; }
   double perimeter(int cell) const { return perimeters[cell]; }
   double preferred_area(int cell) const { return preferred_areas[cell]; }
+  double area_stiffness() const { return area_eps; }
   int vertex_count(int cell) const { return vertex_counts[cell]; }
 
   // Ring neighbours of any vertex of the group, by atom ID (every rank knows all of them).
@@ -74,7 +75,7 @@ class FixDPolyCells : public Fix {
   void set_adhesion(const std::vector<DPoly::AdhesiveBond> &bonds) { adhesion_counts.build(bonds); }
 
  private:
-  double area_stiffness;    // eps_a
+  double area_eps;    // eps_a
   double area_energy;
 
   std::vector<tagint> cell_ids;                    // sorted molecule IDs of the cells

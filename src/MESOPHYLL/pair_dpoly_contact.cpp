@@ -236,5 +236,7 @@ void *PairDPolyContact::extract(const char *str, int &dim)
 {
   dim = 2;
   if (strcmp(str, "eps_c") == 0) return (void *) contact_stiffness;
+  dim = 0;
+  if (strcmp(str, "self") == 0) return (void *) &self_contact;
   return nullptr;
 }
