@@ -307,11 +307,7 @@ TEST(Breaking, RestartGivesTheSameLaterBreaks)
   auto first = pulled_tissue(MPI_COMM_WORLD, data_file("overlapping.data"), 2);
   first->run("write_restart " + restart);
   LammpsSession second;
-  second.run("read_restart " + restart +
-             "\n"
-             "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
-             "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
-             "comm_modify cutoff 3.0\nfix cells all dpoly/cells eps_a 1.0\n"
+  second.run(resume_commands(restart) +
              "fix break all mesophyll/break 31337 beta 30\nmin_style cg\nthermo 1000\n"
              "thermo_style custom step pe\nthermo_modify norm no\n"
              "run 0 post no\n");    // LAMMPS allows change_box only after a first run here

@@ -215,6 +215,16 @@ inline std::string contact_commands(const std::string &data, const Contacts &c =
       "thermo_modify norm no\n";
 }
 
+// Resume a tissue of contact_commands() from a restart file: what the restart file does not hold
+// (the vertex properties' fix, the hybrid bond coefficients, the cells' hub) is given again.
+inline std::string resume_commands(const std::string &restart)
+{
+  return "read_restart " + restart +
+      "\nfix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+      "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
+      "comm_modify cutoff 3.0\nfix cells all dpoly/cells eps_a 1.0\n";
+}
+
 }    // namespace test
 
 #endif

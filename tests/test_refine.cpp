@@ -183,10 +183,7 @@ TEST(Refine, RestartCarriesTheNewVerticesAndTheCounts)
   ASSERT_EQ(first->natoms(), 32);
   first->run("write_restart " + restart);
   LammpsSession second;
-  second.run("read_restart " + restart +
-             "\nfix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
-             "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
-             "comm_modify cutoff 3.0\nfix cells all dpoly/cells eps_a 1.0\n"
+  second.run(resume_commands(restart) +
              "fix refine all dpoly/refine cap 3 runs yes\nthermo_style custom step pe\n"
              "thermo_modify norm no");
   EXPECT_EQ(second.natoms(), 32);
