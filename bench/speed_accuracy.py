@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""Speed against accuracy of the growth protocol: turn one knob at a time, chart cost against error.
+
+    bench/speed_accuracy.py [--lmp build/lmp] [--cells 16] [--budget 0.02]
+                            [--csv bench/results/speed_accuracy.csv] [--png bench/results/speed_accuracy.png]
+
+Reruns examples/mesophyll/in.mesophyll (default parameter set, one seed) with one knob changed
+from the reference, a tight run at the published tolerance (ftol 1e-12, fire/nph, delta_a 0.5,
+1 rank). Knobs: force tolerance, min style, growth increment delta_a (at the same total growth of
+a0), MPI ranks. Accuracy = distance of the run's observables from the reference: RMSD of mean calA
+over phi_patch (interpolated on their common range), |delta phi_patch| at the end, |delta z| at
+phi_patch = 0.5 (or the lowest common phi), and max |P/P0 - 1|. Cost = minimization wall time and
+force evaluations. Prints a table, writes CSV and a PNG, and names the cheapest setting within
+the calA budget. Needs python3-numpy and python3-matplotlib.
+"""
+import argparse
+import csv
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on")
+EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
+TOTAL_GROWTH = 20.0    # 40 steps of delta_a 0.5
+
+REFERENCE = {"ftol": "1e-12", "min": "fire/nph", "delta_a": "0.5", "ranks": 1}
+KNOBS = [("ftol", ["1e-6", "1e-8", "1e-10"]), ("min", ["cg"]), ("delta_a", ["0.25", "1.0"]),
+         ("ranks", [2])]
+
+
+def run(lmp, cells, setting, workroot, mpirun="mpirun"):
+    name = "_".join(f"{k}{v}" for k, v in setting.items()).replace("/", "")
+    work = os.path.join(workroot, name)
+    shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False)
+    if setting["min"] != "fire/nph":    # the input's min_style line names fire/nph
+        path = os.path.join(work, "in.mesophyll")
+        text = open(path).read().replace("min_style       fire/nph",
+                                         f"min_style       {setting['min']}")
+        open(path, "w").write(text)
+    steps = int(round(TOTAL_GROWTH / float(setting["delta_a"])))
+    command = [lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "steps", str(steps),
+               "-var", "delta_a", setting["delta_a"], "-var", "ftol", setting["ftol"],
+               "-log", "log.lammps", "-screen", "none"]
+    if setting["ranks"] > 1:
+        command = [mpirun, "-np", str(setting["ranks"])] + command
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    subprocess.run(command, cwd=work, env=env, check=True)
+    log = open(os.path.join(work, "log.lammps")).read()
+    with open(os.path.join(work, f"growth.N{cells}.txt")) as f:
+        names = f.readline().lstrip("#").split()
+    data = np.loadtxt(os.path.join(work, f"growth.N{cells}.txt"), ndmin=2)
+    record = {n: data[:, k] for k, n in enumerate(names)}
+    record["wall"] = sum(float(m.group(1)) for m in LOOP.finditer(log))
+    record["evaluations"] = sum(int(m.group(2)) for m in EVALS.finditer(log))
+    return record
+
+
+def along_phi(record, key, phis):
+    order = np.argsort(record["phi_patch"])
+    return np.interp(phis, record["phi_patch"][order], record[key][order])
+
+
+def errors(record, reference):
+    lo = max(record["phi_patch"].min(), reference["phi_patch"].min())
+    hi = min(record["phi_patch"].max(), reference["phi_patch"].max())
+    grid = np.linspace(lo, hi, 50)
+    rmsd = float(np.sqrt(np.mean((along_phi(record, "calA", grid) -
+                                  along_phi(reference, "calA", grid)) ** 2)))
+    phi_z = max(0.5, lo)
+    return {"calA_rmsd": rmsd,
+            "dphi_final": abs(record["phi_patch"][-1] - reference["phi_patch"][-1]),
+            "dz": abs(along_phi(record, "z", [phi_z])[0] - along_phi(reference, "z", [phi_z])[0]),
+            "max_dP": float(np.max(np.abs(record["P"] / 1e-3 - 1)))}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--cells", type=int, default=16)
+    p.add_argument("--budget", type=float, default=0.02, help="largest calA RMSD accepted")
+    p.add_argument("--csv", default=os.path.join(ROOT, "bench", "results", "speed_accuracy.csv"))
+    p.add_argument("--png", default=os.path.join(ROOT, "bench", "results", "speed_accuracy.png"))
+    args = p.parse_args()
+    lmp = os.path.abspath(args.lmp)
+
+    rows = []
+    with tempfile.TemporaryDirectory() as workroot:
+        reference = run(lmp, args.cells, REFERENCE, workroot)
+        settings = [("reference", "", REFERENCE)]
+        for knob, values in KNOBS:
+            for value in values:
+                settings.append((knob, value, dict(REFERENCE, **{knob: value})))
+        for knob, value, setting in settings:
+            record = reference if knob == "reference" else run(lmp, args.cells, setting, workroot)
+            row = {"knob": knob, "value": value, "wall_s": round(record["wall"], 2),
+                   "force_evaluations": record["evaluations"], "steps": len(record["step"])}
+            row.update({k: f"{v:.3g}" for k, v in errors(record, reference).items()})
+            rows.append(row)
+            print(f"{knob:9s} {str(value):8s} wall {row['wall_s']:7.2f} s  evals "
+                  f"{row['force_evaluations']:8d}  calA RMSD {row['calA_rmsd']:>8s}  dphi "
+                  f"{row['dphi_final']:>8s}  dz {row['dz']:>6s}  max|P/P0-1| {row['max_dP']}",
+                  flush=True)
+
+    within = [r for r in rows if float(r["calA_rmsd"]) <= args.budget]
+    best = min(within, key=lambda r: r["wall_s"])
+    print(f"cheapest within calA RMSD <= {args.budget}: {best['knob']} {best['value']} "
+          f"({best['wall_s']} s against {rows[0]['wall_s']} s for the reference at ftol 1e-12)")
+
+    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
+    with open(args.csv, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    for knob in ["reference"] + [k for k, _ in KNOBS]:
+        pts = [r for r in rows if r["knob"] == knob]
+        ax.plot([r["wall_s"] for r in pts], [max(float(r["calA_rmsd"]), 1e-6) for r in pts],
+                "o-" if knob != "reference" else "k*", ms=7, label=knob)
+        for r in pts:
+            ax.annotate(str(r["value"]), (r["wall_s"], max(float(r["calA_rmsd"]), 1e-6)),
+                        fontsize=7, xytext=(3, 3), textcoords="offset points")
+    ax.axhline(args.budget, color="grey", ls="--", lw=0.8)
+    ax.set_yscale("log")
+    ax.set_xlabel("minimization wall time (s)")
+    ax.set_ylabel(r"RMSD of mean $\mathcal{A}$ from the reference (1e-6 = exact)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.png, dpi=150)
+    print(f"wrote {args.csv} and {args.png}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+"""Validate the package against the paper: run the development, write doc/validation.md and PNGs.
+
+    tools/validate.py [--lmp build/lmp] [--jobs 2] [--out doc] [--quick]
+
+Runs examples/mesophyll/in.mesophyll:
+  A. the default run (N = 64) with three seeds of bond breaking;
+  B. the sensitivity sets of potentials/arabidopsis.mesophyll (N = 16, two seeds each), with
+     as many growth steps as give the default's total growth of a0 (40 x 0.5), capped;
+  C. the paper's rules (z counts cells, calA_max 3 without growth above) beside the default (N = 64).
+Then states, claim by claim of model.md section 7, whether it holds, with the numbers, and draws
+the PNGs next to the text. --quick runs a few steps only (to try the script). The runs take about
+an hour on 2 cores. Needs python3-numpy and python3-matplotlib.
+"""
+import argparse
+import concurrent.futures
+import os
+import shutil
+import subprocess
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PHI_MAX = 0.975
+SEEDS = [20261122, 11, 12]
+SENSITIVITY = ["default", "beta30", "beta300", "soft_bending", "slow_growth", "slowest_growth",
+               "low_pressure", "high_pressure"]
+DELTA_A = {"slow_growth": 0.01, "slowest_growth": 0.002}
+MAX_STEPS = 2000
+FTOL = {"low_pressure": 1e-13}    # |P - P0| must resolve P0 = 1e-7
+P0 = {"low_pressure": 1e-7, "high_pressure": 5e-2}    # the others: 1e-3
+
+
+def run(lmp, name, cells, pset, seed, steps, workroot):
+    """Run one development; return its growth record as a dict of arrays."""
+    work = os.path.join(workroot, name)
+    shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False)
+    command = [lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "set", pset,
+               "-var", "seed", str(seed), "-var", "steps", str(steps), "-var", "phi_stop", "0.3",
+               "-var", "ftol", str(FTOL.get(pset, 1e-10)), "-log", "log.lammps",
+               "-screen", "none"]
+    result = subprocess.run(command, cwd=work)
+    growth = os.path.join(work, f"growth.N{cells}.txt")
+    with open(growth) as f:
+        names = f.readline().lstrip("#").split()
+    data = np.loadtxt(growth, ndmin=2)
+    record = {n: data[:, k] for k, n in enumerate(names)}
+    with open(os.path.join(work, "log.lammps")) as f:
+        log = f.read()
+    record["failed_checks"] = log.count("; FAILED")
+    record["exit"] = result.returncode
+    return name, record
+
+
+def verdict_low(lowest, rises):
+    trend = "phi never rose" if rises == 0 else f"phi rose in up to {rises} steps"
+    if lowest <= 0.5:
+        return f"Reaches 0.5 and below; {trend}."
+    if lowest <= 0.52:
+        return f"Reaches about 0.5 but not below within the steps run; {trend}."
+    return f"Does not reach 0.5 within the steps run; {trend}."
+
+
+def near(record, phi, key):
+    k = int(np.argmin(np.abs(record["phi_patch"] - phi)))
+    return record[key][k], record["phi_patch"][k]
+
+
+def summary(record, pset):
+    return {
+        "steps": len(record["step"]),
+        "phi_final": record["phi_patch"][-1],
+        "phi_min": record["phi_patch"].min(),
+        "dphi_plus": record["dphi_plus"][-1],
+        "calA_final": record["calA"][-1],
+        "calA_max": record["calA"].max(),
+        "max_dP": np.max(np.abs(record["P"] / P0.get(pset, 1e-3) - 1.0)),
+        "failed": record["failed_checks"],
+    }
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--out", default=os.path.join(ROOT, "doc"))
+    p.add_argument("--quick", action="store_true")
+    args = p.parse_args()
+    lmp = os.path.abspath(args.lmp)
+    steps64 = 3 if args.quick else 40
+
+    jobs = []
+    for seed in SEEDS:
+        jobs.append((f"default_N64_{seed}", 64, "default", seed, steps64))
+    jobs.append(("paper_N64", 64, "paper", SEEDS[0], steps64))
+    for pset in SENSITIVITY:
+        steps = min(MAX_STEPS, int(round(40 * 0.5 / DELTA_A.get(pset, 0.5))))
+        for seed in SEEDS[:2]:
+            jobs.append((f"{pset}_N16_{seed}", 16, pset, seed, 3 if args.quick else steps))
+
+    runs = {}
+    with tempfile.TemporaryDirectory() as workroot:
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            futures = [pool.submit(run, lmp, *job, workroot) for job in jobs]
+            for f in concurrent.futures.as_completed(futures):
+                name, record = f.result()
+                runs[name] = record
+                print(f"{name}: {len(record['step'])} steps, phi_patch "
+                      f"{record['phi_patch'][-1]:.3f}", flush=True)
+    write_report(runs, args.out, args.quick)
+
+
+def write_report(runs, out, quick):
+    os.makedirs(out, exist_ok=True)
+    defaults = [runs[f"default_N64_{s}"] for s in SEEDS]
+
+    fig, ax = plt.subplots(figsize=(4.8, 3.6))
+    for s, r in zip(SEEDS, defaults):
+        ax.plot(PHI_MAX - r["phi_patch"], r["calA"], "o-", ms=2, label=f"seed {s}")
+    r = runs["paper_N64"]
+    ax.plot(PHI_MAX - r["phi_patch"], r["calA"], "s--", ms=2, label="paper rules")
+    ax.set_xlabel(r"$\phi_{max} - \phi$ (patch)")
+    ax.set_ylabel(r"mean $\mathcal{A}$")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "validation_shape.png"), dpi=150)
+
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(4.8, 5), sharex=True)
+    for s, r in zip(SEEDS, defaults):
+        top.plot(r["step"], r["phi_patch"], "o-", ms=2, label=f"seed {s}")
+        bottom.plot(r["step"], r["P"], "o-", ms=2)
+    top.set_ylabel(r"$\phi$ (patch)")
+    top.legend(fontsize=7)
+    bottom.set_ylabel("P at the minimum")
+    bottom.set_xlabel("growth step")
+    bottom.ticklabel_format(axis="y", useOffset=False)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "validation_packing.png"), dpi=150)
+
+    fig, ax = plt.subplots(figsize=(5.5, 3.6))
+    for pset in SENSITIVITY:
+        r = runs[f"{pset}_N16_{SEEDS[0]}"]
+        ax.plot(PHI_MAX - r["phi_patch"], r["calA"], "-", label=pset)
+    ax.set_xlabel(r"$\phi_{max} - \phi$ (patch)")
+    ax.set_ylabel(r"mean $\mathcal{A}$")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "validation_sensitivity.png"), dpi=150)
+
+    lines = ["# Validation against the paper", "",
+             "Regenerated by `tools/validate.py`" + (" (--quick: a few steps only, not a "
+                                                     "validation)" if quick else "") +
+             "; every number below comes from its runs of `examples/mesophyll/in.mesophyll`. "
+             "Seeds are those of bond breaking; each size has one initial tissue "
+             "(`examples/tissue`). phi is the patch packing fraction, as in the paper.", "",
+             "## Default run (N = 64, Table 1, P0 = 1e-3)", "",
+             "| seed | steps | phi start -> end (min) | max abs(P/P0 - 1) | calA dip | calA at phi~0.53 "
+             "| z at phi~0.5 | delta_phi_plus | failed checks |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    claims = {"monotonic": [], "calA": [], "z": [], "below05": []}
+    for s, r in zip(SEEDS, defaults):
+        calA53, phi53 = near(r, 0.53, "calA")
+        z50, phi50 = near(r, 0.50, "z")
+        dip = r["calA"].min()
+        lines.append(f"| {s} | {len(r['step'])} | {r['phi_patch'][0]:.3f} -> "
+                     f"{r['phi_patch'][-1]:.3f} ({r['phi_patch'].min():.3f}) | "
+                     f"{np.max(np.abs(r['P'] / 1e-3 - 1)):.1e} | {dip:.3f} | {calA53:.2f} "
+                     f"(phi {phi53:.3f}) | {z50:.2f} (phi {phi50:.3f}) | {r['dphi_plus'][-1]:.4f} "
+                     f"| {r['failed_checks']} |")
+        drops = np.diff(r["phi_patch"])
+        claims["monotonic"].append((drops > 0).sum())
+        claims["calA"].append(calA53)
+        claims["z"].append(z50)
+        claims["below05"].append(r["phi_patch"].min())
+    lines += ["", "![calA against phi](validation_shape.png) "
+              "![phi and P against step](validation_packing.png)", "",
+              "Claims of model.md section 7, one by one:", ""]
+    lines.append(f"- *phi falls monotonically from about 0.975 to 0.5 and below while P stays at "
+                 f"P0*: the runs start at phi {defaults[0]['phi_patch'][0]:.3f} (the generated "
+                 f"tissue, not 0.975) and reach {min(claims['below05']):.3f} at the lowest; steps "
+                 f"at which phi rose: {claims['monotonic']}; P equals P0 to the figures in the "
+                 "table. " + verdict_low(min(claims["below05"]), max(claims["monotonic"])))
+    lines.append(f"- *mean calA starts near 1.15, dips, rises to about 2.1 near phi = 0.53*: "
+                 f"starts at {defaults[0]['calA'][0]:.3f}, dips to "
+                 f"{min(r['calA'].min() for r in defaults):.3f}, and is "
+                 f"{', '.join(f'{c:.2f}' for c in claims['calA'])} at the minimum nearest 0.53.")
+    lines.append(f"- *z near phi = 0.5 is about 4.5-5*: "
+                 f"{', '.join(f'{z:.2f}' for z in claims['z'])}.")
+
+    lines += ["", "## Sensitivity (N = 16, two seeds each)", "",
+              "Each set changes one parameter of the default (`potentials/arabidopsis.mesophyll`). "
+              f"Runs grow a0 by 20 in all (40 steps of 0.5), at most {MAX_STEPS} steps, or stop "
+              "when phi falls below 0.3.", "",
+              "| set | steps | phi end (min) | delta_phi_plus | calA end (max) | "
+              "max abs(P/P0 - 1) | failed checks |", "| --- | --- | --- | --- | --- | --- | --- |"]
+    table = {}
+    for pset in SENSITIVITY:
+        sums = [summary(runs[f"{pset}_N16_{s}"], pset) for s in SEEDS[:2]]
+        table[pset] = sums
+        def both(fmt):
+            return "/".join(fmt(x) for x in sums)
+        lines.append(
+            f"| {pset} | {both(lambda x: str(x['steps']))} | "
+            + both(lambda x: f"{x['phi_final']:.3f} ({x['phi_min']:.3f})") + " | "
+            + both(lambda x: f"{x['dphi_plus']:.3f}") + " | "
+            + both(lambda x: f"{x['calA_final']:.2f} ({x['calA_max']:.2f})") + " | "
+            + both(lambda x: f"{x['max_dP']:.1e}") + " | "
+            + both(lambda x: str(x['failed'])) + " |")
+
+    def mean(pset, key):
+        return np.mean([x[key] for x in table[pset]])
+
+    d = "default"
+    lines += ["", "![calA against phi by set](validation_sensitivity.png)", "",
+              "Directions of the paper, one by one (means over the two seeds):", ""]
+    for pset, text in [("beta30", "low beta compacts"), ("soft_bending", "low eps_b compacts"),
+                       ("slow_growth", "delta_a = 0.01 compacts"),
+                       ("high_pressure", "P0 = 5e-2 compacts, with extreme calA")]:
+        holds = mean(pset, "dphi_plus") > mean(d, "dphi_plus")
+        lines.append(f"- *{text}*: delta_phi_plus {mean(pset, 'dphi_plus'):.3f} against "
+                     f"{mean(d, 'dphi_plus'):.3f} for the default; max calA "
+                     f"{mean(pset, 'calA_max'):.2f} against {mean(d, 'calA_max'):.2f}. "
+                     + ("Holds." if holds else "Does not hold here."))
+
+    r, q = runs["default_N64_" + str(SEEDS[0])], runs["paper_N64"]
+    lines += ["", "## The two rule sets (N = 64, seed " + str(SEEDS[0]) + ")", "",
+              "| rules | steps | phi end (min) | calA end | z end | bonds end | delta_phi_plus |",
+              "| --- | --- | --- | --- | --- | --- | --- |"]
+    for label, x in [("code: z = bonds, calA_max 2.5 isometric", r),
+                     ("paper: z = cells, calA_max 3 no growth", q)]:
+        lines.append(f"| {label} | {len(x['step'])} | {x['phi_patch'][-1]:.3f} "
+                     f"({x['phi_patch'].min():.3f}) | {x['calA'][-1]:.2f} | {x['z'][-1]:.2f} | "
+                     f"{int(x['bonds'][-1])} | {x['dphi_plus'][-1]:.4f} |")
+    with open(os.path.join(out, "validation.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"wrote {os.path.join(out, 'validation.md')} and three PNGs")
+
+
+if __name__ == "__main__":
+    main()
