@@ -35,7 +35,8 @@ std::string protocol_fixes()
          "min_style fire/nph\ntimestep 0.01\nmin_modify tmax 5\n";
 }
 
-std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD)
+// extra: commands after the protocol's fixes (fix dpoly/refine acts after fix mesophyll/grow)
+std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD, const std::string &extra = "")
 {
   auto s = std::make_unique<LammpsSession>(comm);
   s->run("units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
@@ -44,10 +45,11 @@ std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD)
          "angle_style dpoly/bending\n"
          "read_data " +
          tissue_file() +
-         " fix Vertices NULL Vertices extra/special/per/atom 40\n"
+         " fix Vertices NULL Vertices extra/special/per/atom 40 extra/bond/per/atom 2 "
+         "extra/angle/per/atom 2\n"
          "angle_coeff * 0.4\npair_style dpoly/contact\npair_coeff * * 1.0\n"
          "special_bonds lj 1.0 1.0 1.0\n" +
-         protocol_fixes());
+         protocol_fixes() + extra);
   return s;
 }
 
@@ -137,4 +139,29 @@ TEST(Development, RestartAfterTheFirstStepReproducesTheRest)
   EXPECT_NEAR(resumed.thermo("f_grow[4]"), reference[0].phi, 1e-14) << "and phi at the minimum";
   const std::vector<Minimum> rest = develop(resumed, 2);
   expect_same_minima(rest, {reference[1], reference[2]}, "restart");
+}
+
+TEST(Development, WithVertexInsertionStaysAtP0OnAnyRankCount)
+{
+  const std::string refine = "fix refine all dpoly/refine length 3\n";
+  auto s = tissue(MPI_COMM_WORLD, refine);
+  const std::vector<Minimum> minima = develop(*s, 3);
+  for (size_t k = 0; k < minima.size(); k++) {
+    EXPECT_EQ(minima[k].converged, 1.0) << "minimum " << k + 1;
+    EXPECT_LT(minima[k].pressure_error, 1e-6) << "minimum " << k + 1;
+  }
+  const double added = s->thermo("f_refine[2]");
+  EXPECT_GT(added, 0.0) << "three growth steps stretch void segments past 3 radii";
+  EXPECT_EQ(s->thermo("atoms"), 512.0 + added) << "each insertion adds one vertex";
+  if (world_size() == 1) return;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<Minimum> serial_minima(minima.size());
+  if (rank == 0) {
+    auto serial = tissue(self_comm(), refine);
+    serial_minima = develop(*serial, 3);
+  }
+  MPI_Bcast(serial_minima.data(), (int) (serial_minima.size() * sizeof(Minimum)), MPI_BYTE, 0,
+            MPI_COMM_WORLD);
+  expect_same_minima(minima, serial_minima, "ranks, with insertion");
 }
