@@ -12,7 +12,8 @@ per minimization), growth increment delta_a (at the same total growth of a0), ve
 observables from the reference: RMSD of mean calA over phi_patch (interpolated on their common
 range), |delta phi_patch| at the end, |delta z| at phi_patch = 0.5 (or the lowest common phi),
 and max |P/P0 - 1|. Cost = minimization wall time and force evaluations. Prints a table, writes
-CSV and a PNG, and names the cheapest setting within the calA budget. Needs python3-numpy and python3-matplotlib.
+CSV and a PNG, and names the cheapest setting within the calA budget. Needs python3-numpy and
+python3-matplotlib.
 """
 import argparse
 import csv
