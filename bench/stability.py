@@ -38,8 +38,8 @@ CASES = [
      {"steps": 2, "P0": 2.0}),
     ("pinched ring", "a ring whose preferred angles fold it through itself, no self-repulsion",
      "in.pinch", {}),
-    ("unreachable P0", "fix box/relax asked for a tension the tissue cannot hold",
-     "mesophyll", {"steps": 1, "P0": -0.5}),
+    ("unreachable P0", "fix box/relax asked for a tension (P0 = -50) the tissue cannot hold",
+     "mesophyll", {"steps": 1, "P0": -50}),
 ]
 
 

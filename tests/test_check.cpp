@@ -91,7 +91,7 @@ TEST(Check, BadInput)
     LammpsSession s;
     return s.try_run(contact_commands(data_file("overlapping.data")) + line + "\nrun 0 post no");
   };
-  EXPECT_NE(error_of("fix c all dpoly/check pressure 0").find("pressure must be > 0, got 0"),
+  EXPECT_NE(error_of("fix c all dpoly/check pressure 0").find("pressure must be nonzero, got 0"),
             std::string::npos);
   EXPECT_NE(error_of("fix c all dpoly/check action shout").find("must be 'warn' or 'error'"),
             std::string::npos);

@@ -37,8 +37,8 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
       utils::missing_cmd_args(FLERR, std::string("fix dpoly/check ") + arg[iarg], error);
     if (strcmp(arg[iarg], "pressure") == 0) {
       target_pressure = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (target_pressure <= 0.0)
-        error->all(FLERR, "Fix dpoly/check pressure must be > 0, got {}", arg[iarg + 1]);
+      if (target_pressure == 0.0)    // the check is relative to |P0|
+        error->all(FLERR, "Fix dpoly/check pressure must be nonzero, got {}", arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "tolerance") == 0) {
       pressure_tolerance = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (pressure_tolerance <= 0.0)
@@ -96,10 +96,10 @@ int FixDPolyCheck::check()
   const double force_norm = sqrt(min->fnorm_sqr());
 
   double pressure_error = 0.0;
-  if (target_pressure > 0.0) {
+  if (target_pressure != 0.0) {
     Compute *pressure = modify->get_compute_by_id("thermo_press");
     if (!pressure) error->all(FLERR, "Fix dpoly/check: no thermo_press compute to measure P");
-    pressure_error = fabs(pressure->compute_scalar() - target_pressure) / target_pressure;
+    pressure_error = fabs(pressure->compute_scalar() - target_pressure) / fabs(target_pressure);
   }
 
   int inverted = 0;
@@ -135,7 +135,7 @@ int FixDPolyCheck::check()
   if (comm->me == 0)
     utils::logmesg(lmp, "fix dpoly/check: minimum {} at step {}: {}, force norm {:.6g}{}{}\n",
                    minima, update->ntimestep, min->stopstr, force_norm,
-                   target_pressure > 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error) : "",
+                   target_pressure != 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error) : "",
                    problems.empty() ? "" : "; FAILED" + problems);
   if (problems.empty()) return 0;
   const std::string message =
