@@ -11,7 +11,8 @@ minimization, at the minimum and before the growth fix changes the preferred val
 growth step it records the lowest eigenvalue above the zero level (the two translations and any
 other zero modes left out), the number of extra zero modes, and the compaction of that step,
 delta_phi_plus(k) - delta_phi_plus(k-1). A cell that buckles softens one mode to zero before the
-tissue compacts, so the step before each compaction should show a low lowest eigenvalue.
+tissue compacts, so the step before each compaction should show a lower lowest eigenvalue than the
+other steps of the same stage. The input's defaults apply (vertex insertion on).
 Prints a table and a verdict, writes CSV and a PNG. Needs python3-numpy and python3-matplotlib.
 """
 import argparse
@@ -97,14 +98,15 @@ def main():
         print(f"{steps[k]:5d}  {phi[k]:9.4f}  {compaction[k]:10.5f}  {int(zero_modes[k]):16d}  "
               f"{lowest[k]:17.6g}{mark}")
 
-    # compare the step before a compaction with the steps before none
+    # the step before a compaction against the steps before none, from the first compaction on
+    # (the whole tissue softens as it opens, so earlier steps would compare stiff with soft)
     jumps = [k for k in range(1, len(steps)) if compaction[k] > COMPACTION]
     before = [lowest[k - 1] for k in jumps]
-    quiet = [lowest[k - 1] for k in range(1, len(steps)) if k not in jumps]
+    quiet = [lowest[k - 1] for k in range(jumps[0] if jumps else 1, len(steps)) if k not in jumps]
     if jumps and quiet:
-        print(f"lowest eigenvalue the step before a compaction: median {np.median(before):.3g} "
-              f"({len(before)} compactions); before the other steps: median "
-              f"{np.median(quiet):.3g} ({len(quiet)} steps)")
+        print(f"from step {steps[jumps[0]]} on, lowest eigenvalue the step before a compaction: "
+              f"median {np.median(before):.3g} ({len(before)} compactions); before the other "
+              f"steps: median {np.median(quiet):.3g} ({len(quiet)} steps)")
     else:
         print("no compaction in this run: nothing to compare")
 

@@ -2,13 +2,15 @@
 """Benchmark the growth protocol: wall time and minimizer iterations per growth step.
 
     bench/development.py [--lmp build/lmp] [--cells 16 64] [--ranks 1 2] [--steps 11]
-                         [--csv bench/results/development.csv] [--mpirun mpirun]
+                         [--refine 3] [--csv bench/results/development.csv] [--mpirun mpirun]
 
 Runs examples/mesophyll/in.mesophyll (default parameter set, min_style fire/nph) for each number
-of cells and MPI ranks, one after the other, and writes one CSV row per growth step: cells, ranks,
-step, phi_patch, mean calA, iterations, force evaluations, minimization wall time (LAMMPS's "Loop
-time"). Prints a summary per run with the published code's figures beside it. Not a test: run it
-on an otherwise idle machine and record the machine with the figures. Standard library only.
+of cells and MPI ranks, one after the other, with vertex insertion at --refine vertex radii (the
+example's 3; 0: none), and writes one CSV row per growth step: cells, ranks, refine, step,
+phi_patch, mean calA, vertices, iterations, force evaluations, minimization wall time (LAMMPS's
+"Loop time"). Prints a summary per run with the published code's figures beside it. Not a
+test: run it on an otherwise idle machine and record the machine with the figures. Standard
+library only.
 """
 import argparse
 import csv
@@ -28,7 +30,7 @@ ROOT = os.path.dirname(HERE)
 PUBLISHED = "published code, N = 16: 3e3 -> 1e5 FIRE iterations per growth step, " \
             "about 5.4 min for the first 11 growth steps (phi 0.93 -> 0.49)"
 
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps")
+LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
 
 
@@ -36,7 +38,8 @@ def run(args, cells, ranks, workdir):
     example = os.path.join(ROOT, "examples", "mesophyll")
     shutil.copytree(example, workdir, dirs_exist_ok=True, symlinks=False)
     command = [args.lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "steps",
-               str(args.steps), "-log", "log.bench", "-screen", "none"]
+               str(args.steps), "-var", "refine", args.refine, "-log", "log.bench", "-screen",
+               "none"]
     if ranks > 1:
         command = args.mpirun.split() + ["-np", str(ranks)] + command
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -46,17 +49,18 @@ def run(args, cells, ranks, workdir):
 
     with open(os.path.join(workdir, "log.bench")) as f:
         log = f.read()
-    loops = [float(m.group(1)) for m in LOOP.finditer(log)]
+    loops = [(float(m.group(1)), int(m.group(4))) for m in LOOP.finditer(log)]
     evals = [(int(m.group(1)), int(m.group(2))) for m in EVALS.finditer(log)]
     rows = []
     with open(os.path.join(workdir, f"growth.N{cells}.txt")) as f:
         names = f.readline().lstrip("#").split()
         for k, line in enumerate(f):
             rec = dict(zip(names, line.split()))
-            rows.append({"cells": cells, "ranks": ranks, "step": int(rec["step"]),
-                         "phi_patch": float(rec["phi_patch"]), "calA": float(rec["calA"]),
+            rows.append({"cells": cells, "ranks": ranks, "refine": args.refine,
+                         "step": int(rec["step"]), "phi_patch": float(rec["phi_patch"]),
+                         "calA": float(rec["calA"]), "vertices": loops[k][1],
                          "iterations": evals[k][0], "force_evaluations": evals[k][1],
-                         "wall_s": loops[k]})
+                         "wall_s": loops[k][0]})
     return rows, total
 
 
@@ -66,6 +70,7 @@ def main():
     p.add_argument("--cells", type=int, nargs="+", default=[16, 64])
     p.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     p.add_argument("--steps", type=int, default=11)
+    p.add_argument("--refine", default="3", help="fix dpoly/refine length; 0: no insertion")
     p.add_argument("--csv", default=os.path.join(HERE, "results", "development.csv"))
     p.add_argument("--mpirun", default="mpirun")
     args = p.parse_args()
@@ -82,7 +87,7 @@ def main():
             all_rows += rows
             iters = [r["iterations"] for r in rows]
             wall = sum(r["wall_s"] for r in rows)
-            per = 1e6 * wall / (sum(iters) * 32 * cells)
+            per = 1e6 * wall / sum(r["iterations"] * r["vertices"] for r in rows)
             print(f"{cells:5d} {ranks:5d} {len(rows):5d} {rows[0]['phi_patch']:7.3f} -> "
                   f"{rows[-1]['phi_patch']:6.3f} {min(iters):7d} .. {max(iters):6d} "
                   f"(mean {sum(iters) // len(iters):6d}) {wall:10.1f} {total:8.1f} {per:16.3f}")
