@@ -86,6 +86,18 @@ void expect_same_minima(const std::vector<Minimum> &a, const std::vector<Minimum
   }
 }
 
+// The same development on rank 0 alone, its minima sent to every rank (one serial copy per rank
+// would crowd the cores).
+std::vector<Minimum> serial_development(int steps, const std::string &extra = "")
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<Minimum> minima(steps);
+  if (rank == 0) minima = develop(*tissue(self_comm(), extra), steps);
+  MPI_Bcast(minima.data(), (int) (minima.size() * sizeof(Minimum)), MPI_BYTE, 0, MPI_COMM_WORLD);
+  return minima;
+}
+
 }    // namespace
 
 TEST(Development, EveryMinimumIsAtP0AndTheTissueOpens)
@@ -110,17 +122,7 @@ TEST(Development, SameOnOneAndSeveralRanks)
   if (world_size() == 1) GTEST_SKIP() << "needs more than one MPI rank";
   auto parallel = tissue();
   const std::vector<Minimum> minima = develop(*parallel, 3);
-  // the serial reference runs on rank 0 alone (one copy per rank would crowd the cores)
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  std::vector<Minimum> serial_minima(minima.size());
-  if (rank == 0) {
-    auto serial = tissue(self_comm());
-    serial_minima = develop(*serial, 3);
-  }
-  MPI_Bcast(serial_minima.data(), (int) (serial_minima.size() * sizeof(Minimum)), MPI_BYTE, 0,
-            MPI_COMM_WORLD);
-  expect_same_minima(minima, serial_minima, "ranks");
+  expect_same_minima(minima, serial_development(3), "ranks");
 }
 
 TEST(Development, RestartAfterTheFirstStepReproducesTheRest)
@@ -153,15 +155,6 @@ TEST(Development, WithVertexInsertionStaysAtP0OnAnyRankCount)
   const double added = s->thermo("f_refine[2]");
   EXPECT_GT(added, 0.0) << "three growth steps stretch void segments past 3 radii";
   EXPECT_EQ(s->thermo("atoms"), 512.0 + added) << "each insertion adds one vertex";
-  if (world_size() == 1) return;
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  std::vector<Minimum> serial_minima(minima.size());
-  if (rank == 0) {
-    auto serial = tissue(self_comm(), refine);
-    serial_minima = develop(*serial, 3);
-  }
-  MPI_Bcast(serial_minima.data(), (int) (serial_minima.size() * sizeof(Minimum)), MPI_BYTE, 0,
-            MPI_COMM_WORLD);
-  expect_same_minima(minima, serial_minima, "ranks, with insertion");
+  if (world_size() > 1)
+    expect_same_minima(minima, serial_development(3, refine), "ranks, with insertion");
 }
