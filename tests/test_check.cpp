@@ -42,6 +42,14 @@ TEST(Check, WrongPressureIsReported)
   EXPECT_NEAR(s->thermo("f_check[3]"), 0.5, 1.0e-6) << "P = 1e-3 against a stated P0 of 2e-3";
 }
 
+// A tension target: the error is relative to |P0|, so a minimum at +1e-3 is 2 away from -1e-3 (a
+// signed denominator would give -2 and pass the check).
+TEST(Check, TensionTargetIsComparedByItsSize)
+{
+  auto s = relaxed_tissue("pressure -1.0e-3", "minimize 0.0 1.0e-10 20000 200000");
+  EXPECT_NEAR(s->thermo("f_check[3]"), 2.0, 1.0e-6);
+}
+
 TEST(Check, UnfinishedMinimizationWarnsOrStops)
 {
   if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
