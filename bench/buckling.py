@@ -20,6 +20,7 @@ import csv
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 
 import matplotlib
@@ -29,24 +30,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+from regression import thermo_blocks  # noqa: E402  (the thermo-table reader of the tests)
 MODES = 8           # eigenvalues reported per minimum
 ZERO = 1.0e-8       # the compute's zero level
 COMPACTION = 1e-3   # a step whose phi rises by more than this counts as a compaction
 
 
-def minima_rows(log):
+def minima_rows(log_path):
     """The last thermo row of every minimization: the state at the minimum."""
-    rows, header, last = [], None, None
-    for line in log.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            header, last = words, None
-        elif header and words and words[0] == "Loop":
-            rows.append(dict(zip(header, map(float, last))))
-            header = None
-        elif header and len(words) == len(header):
-            last = words
-    return rows
+    return [dict(zip(columns, rows[-1])) for columns, rows in thermo_blocks(log_path) if rows]
 
 
 def lowest_nonzero(row):
@@ -80,7 +73,7 @@ def main():
                    "-var", "set", args.set, "-var", "seed", args.seed, "-var", "steps",
                    str(args.steps), "-log", "log.lammps", "-screen", "none"]
         subprocess.run(command, cwd=work, check=True)
-        minima = minima_rows(open(os.path.join(work, "log.lammps")).read())
+        minima = minima_rows(os.path.join(work, "log.lammps"))
         growth = np.loadtxt(os.path.join(work, f"growth.N{args.cells}.txt"), ndmin=2)
 
     steps = growth[:, 0].astype(int)
