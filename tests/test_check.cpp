@@ -103,7 +103,4 @@ TEST(Check, BadInput)
             std::string::npos);
   EXPECT_NE(error_of("fix c all dpoly/check action shout").find("must be 'warn' or 'error'"),
             std::string::npos);
-  EXPECT_NE(error_of("fix b all mesophyll/break 3\nfix c all dpoly/check")
-                .find("must be defined before fix b"),
-            std::string::npos);
 }

@@ -20,23 +20,27 @@ std::string tissue_file()
   return std::string(dir ? dir : "examples") + "/tissue/tissue_N16.data";
 }
 
+const std::string CHECK = "fix check all dpoly/check pressure 1.0e-3\n";
+const std::string BREAK = "fix break all mesophyll/break 20261122 beta 100\n";
+const std::string GROW = "fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4\n";
+const std::string REFINE = "fix refine all dpoly/refine length 3\n";
+
 // Everything after the styles: the same in a fresh start and after read_restart.
-std::string protocol_fixes()
+std::string protocol_fixes(const std::string &stages = CHECK + BREAK + GROW)
 {
   return "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
          "comm_modify cutoff 3.0\n"
-         "fix cells all dpoly/cells eps_a 1.0\n"
-         "fix check all dpoly/check pressure 1.0e-3\n"
-         "fix break all mesophyll/break 20261122 beta 100\n"
-         "fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4\n"
-         "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\n"
-         "compute tissue all dpoly/tissue\n"
-         "thermo_style custom step pe press c_tissue[1]\nthermo_modify norm no\nthermo 100000\n"
-         "min_style fire/nph\ntimestep 0.01\nmin_modify tmax 5\n";
+         "fix cells all dpoly/cells eps_a 1.0\n" +
+      stages +
+      "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\n"
+      "compute tissue all dpoly/tissue\n"
+      "thermo_style custom step pe press c_tissue[1]\nthermo_modify norm no\nthermo 100000\n"
+      "min_style fire/nph\ntimestep 0.01\nmin_modify tmax 5\n";
 }
 
-// extra: commands after the protocol's fixes (fix dpoly/refine acts after fix mesophyll/grow)
-std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD, const std::string &extra = "")
+// extra: commands after the protocol's fixes; stages: the stage fixes, in the order given
+std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD, const std::string &extra = "",
+                                      const std::string &stages = CHECK + BREAK + GROW)
 {
   auto s = std::make_unique<LammpsSession>(comm);
   s->run("units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
@@ -49,7 +53,7 @@ std::unique_ptr<LammpsSession> tissue(MPI_Comm comm = MPI_COMM_WORLD, const std:
          "extra/angle/per/atom 2\n"
          "angle_coeff * 0.4\npair_style dpoly/contact\npair_coeff * * 1.0\n"
          "special_bonds lj 1.0 1.0 1.0\n" +
-         protocol_fixes() + extra);
+         protocol_fixes(stages) + extra);
   return s;
 }
 
@@ -145,8 +149,7 @@ TEST(Development, RestartAfterTheFirstStepReproducesTheRest)
 
 TEST(Development, WithVertexInsertionStaysAtP0OnAnyRankCount)
 {
-  const std::string refine = "fix refine all dpoly/refine length 3\n";
-  auto s = tissue(MPI_COMM_WORLD, refine);
+  auto s = tissue(MPI_COMM_WORLD, REFINE);
   const std::vector<Minimum> minima = develop(*s, 3);
   for (size_t k = 0; k < minima.size(); k++) {
     EXPECT_EQ(minima[k].converged, 1.0) << "minimum " << k + 1;
@@ -156,5 +159,25 @@ TEST(Development, WithVertexInsertionStaysAtP0OnAnyRankCount)
   EXPECT_GT(added, 0.0) << "three growth steps stretch void segments past 3 radii";
   EXPECT_EQ(s->thermo("atoms"), 512.0 + added) << "each insertion adds one vertex";
   if (world_size() > 1)
-    expect_same_minima(minima, serial_development(3, refine), "ranks, with insertion");
+    expect_same_minima(minima, serial_development(3, REFINE), "ranks, with insertion");
+}
+
+// fix dpoly/cells runs check, break, grow, refine after each minimum, whatever the order of the
+// fix commands: the reversed order gives the very same development (bonds break after the
+// first minima, so growing before breaking would see other void-facing vertices)
+TEST(Development, StagesActInTheProtocolOrderWhateverTheOrderOfTheFixCommands)
+{
+  const std::vector<Minimum> in_order =
+      develop(*tissue(MPI_COMM_WORLD, "", CHECK + BREAK + GROW + REFINE), 3);
+  const std::vector<Minimum> reversed =
+      develop(*tissue(MPI_COMM_WORLD, "", REFINE + GROW + BREAK + CHECK), 3);
+  ASSERT_EQ(in_order.size(), reversed.size());
+  for (size_t k = 0; k < in_order.size(); k++) {
+    EXPECT_EQ(in_order[k].phi, reversed[k].phi) << "step " << k + 1;
+    EXPECT_EQ(in_order[k].shape, reversed[k].shape) << "step " << k + 1;
+    EXPECT_EQ(in_order[k].contacts, reversed[k].contacts) << "step " << k + 1;
+    EXPECT_EQ(in_order[k].bonds, reversed[k].bonds) << "step " << k + 1;
+    EXPECT_EQ(in_order[k].converged, 1.0) << "step " << k + 1;
+  }
+  EXPECT_LT(in_order.back().bonds, in_order.front().bonds) << "bonds broke on the way";
 }

@@ -214,9 +214,6 @@ TEST_F(BadGrowth, RefusesNonsense)
   EXPECT_NE(error_of("fix g all mesophyll/grow speed 2").find("keyword: speed"), std::string::npos);
   EXPECT_NE(error_of("fix g all mesophyll/grow box open").find("box must be 'relax' or 'fixed'"),
             std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow\nfix b all mesophyll/break 5")
-                .find("define the breaking fix first"),
-            std::string::npos);
 }
 
 TEST_F(BadGrowth, NeedsBoxRelaxUnlessToldTheBoxIsFixed)

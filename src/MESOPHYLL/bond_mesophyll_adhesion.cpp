@@ -19,14 +19,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <utility>
 
 using namespace LAMMPS_NS;
 using DPoly::AdhesiveBond;
-using DPoly::ContactRule;
 
 BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
-    Bond(lmp), contact_stiffness(nullptr), rule(ContactRule::BONDS), cells(nullptr)
+    Bond(lmp), contact_stiffness(nullptr), rule(ContactRule::BONDS)
 {
   born_matrix_enable = 0;
 }
@@ -67,15 +67,39 @@ void BondMesophyllAdhesion::settings(int narg, char **arg)
   }
 }
 
+BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const char *who)
+{
+  auto *adhesion =
+      dynamic_cast<BondMesophyllAdhesion *>(lmp->force->bond_match("mesophyll/adhesion"));
+  if (!adhesion)
+    lmp->error->all(FLERR, "{} needs bond_style mesophyll/adhesion (alone or in hybrid)", who);
+  return adhesion;
+}
+
+// the hub recounts the contacts at every run start: without it they would never be counted
 void BondMesophyllAdhesion::init_style()
 {
-  cells = FixDPolyCells::find(lmp, "Bond style mesophyll/adhesion");
+  FixDPolyCells::find(lmp, "Bond style mesophyll/adhesion");
   DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+}
+
+double BondMesophyllAdhesion::contact_number(const DPoly::AdhesionCounts &from, tagint cell1,
+                                             tagint cell2) const
+{
+  auto z = [&](tagint cell) -> double {
+    return rule == ContactRule::BONDS ? from.cell_bonds(cell) : from.cell_contacts(cell);
+  };
+  return 0.5 * (z(cell1) + z(cell2)) + 1.0;
 }
 
 double BondMesophyllAdhesion::contact_number(int i, int j)
 {
-  return cells->adhesion().pair_contact_number(atom->molecule[i], atom->molecule[j], rule);
+  return contact_number(contacts, atom->molecule[i], atom->molecule[j]);
+}
+
+void BondMesophyllAdhesion::recount()
+{
+  contacts.build(gather_bonds());
 }
 
 /* ----------------------------------------------------------------------
@@ -175,6 +199,31 @@ std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
                  "adhesive bonds join different cells",
                  b.atom1, b.atom2, b.cell1);
   return all;
+}
+
+void BondMesophyllAdhesion::remove_bonds(const std::vector<AdhesiveBond> &gone)
+{
+  auto key = [](tagint a, tagint b) {
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  std::set<std::pair<tagint, tagint>> removed;
+  for (const auto &b : gone) {
+    removed.insert(key(b.atom1, b.atom2));
+    contacts.remove(b);
+  }
+  for (int i = 0; i < atom->nlocal; i++) {
+    int m = 0;
+    while (m < atom->num_bond[i]) {
+      if (is_adhesive_type(atom->bond_type[i][m]) &&
+          removed.count(key(atom->tag[i], atom->bond_atom[i][m]))) {
+        const int last = --atom->num_bond[i];
+        atom->bond_type[i][m] = atom->bond_type[i][last];
+        atom->bond_atom[i][m] = atom->bond_atom[i][last];
+      } else
+        m++;
+    }
+  }
+  atom->nbonds -= (bigint) gone.size();
 }
 
 void BondMesophyllAdhesion::coeff(int narg, char **arg)

@@ -22,8 +22,10 @@ namespace LAMMPS_NS {
 // Contact-dependent adhesion between vertices of two cells (Treado et al., eq. 2 and S2):
 //   U = eps_c/(2 z_munu) (1 - r/s)^2 for a stretched bond (r > s), 0 otherwise,
 // z_munu = (z_mu + z_nu)/2 + 1. Overlap (r < s) is left to pair dpoly/contact, so that no pair
-// is counted twice. The contact numbers are those of fix dpoly/cells, fixed during a run.
-class BondMesophyllAdhesion : public Bond {
+// is counted twice. The style owns the table of adhesive bonds per vertex and per cell: it is
+// recounted whenever fix dpoly/cells re-reads the cells (every run start) and is fixed during a
+// run; bonds leave it only through remove_bonds().
+class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
  public:
   BondMesophyllAdhesion(class LAMMPS *);
   ~BondMesophyllAdhesion() override;
@@ -40,16 +42,31 @@ class BondMesophyllAdhesion : public Bond {
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
 
+  // The style of this LAMMPS instance (alone or in hybrid); an error names 'who' if none.
+  static BondMesophyllAdhesion *find(class LAMMPS *lmp, const char *who);
+
   // Collective: every adhesive bond of the system with its current stretch, sorted by IDs.
   std::vector<DPoly::AdhesiveBond> gather_bonds();
   bool is_adhesive_type(int type) const { return allocated && type > 0 && setflag[type]; }
   double stiffness(int type) const { return contact_stiffness[type]; }
-  DPoly::ContactRule contact_rule() const { return rule; }
+
+  // The current bond counts, and a collective recount from the bonds (DPoly::CellAdhesion).
+  const DPoly::AdhesionCounts &counts() const override { return contacts; }
+  void recount() override;
+  // Collective: delete these bonds (a whole-system list, the same on every rank) from the atoms
+  // and from the counts. The caller rebuilds the special lists.
+  void remove_bonds(const std::vector<DPoly::AdhesiveBond> &gone);
+
+  // The paper's contact number of a bonded pair of cells under the chosen z rule (eq. S2):
+  // z_munu = (z_mu + z_nu)/2 + 1, z_mu = bonds of the cell (z bonds) or cells bonded to it
+  // (z cells), counted in 'from'.
+  double contact_number(const DPoly::AdhesionCounts &from, tagint cell1, tagint cell2) const;
 
  protected:
+  enum class ContactRule { BONDS, CELLS };
   double *contact_stiffness;    // eps_c per bond type
-  DPoly::ContactRule rule;
-  class FixDPolyCells *cells;
+  ContactRule rule;
+  DPoly::AdhesionCounts contacts;
   void allocate();
   double contact_number(int i, int j);
 };

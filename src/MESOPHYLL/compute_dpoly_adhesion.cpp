@@ -6,6 +6,7 @@
 #include "compute_dpoly_adhesion.h"
 
 #include "atom.h"
+#include "dpoly_adhesion.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "memory.h"
@@ -43,13 +44,14 @@ void ComputeDPolyAdhesion::compute_array()
 {
   invoked_array = update->ntimestep;
   const int n = cells->ncells();
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   memory->destroy(per_cell);
   memory->create(per_cell, std::max(n, 1), 3, "dpoly/adhesion:per_cell");
   for (int c = 0; c < n; c++) {
     const tagint id = cells->cell_id(c);
     per_cell[c][0] = id;
-    per_cell[c][1] = cells->adhesion().cell_bonds(id);
-    per_cell[c][2] = cells->adhesion().cell_contacts(id);
+    per_cell[c][1] = adhesion.cell_bonds(id);
+    per_cell[c][2] = adhesion.cell_contacts(id);
   }
   size_array_rows = n;
   array = per_cell;
@@ -64,8 +66,9 @@ void ComputeDPolyAdhesion::compute_peratom()
     memory->create(per_vertex, nmax, "dpoly/adhesion:per_vertex");
     vector_atom = per_vertex;
   }
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   for (int i = 0; i < atom->nlocal; i++)
-    per_vertex[i] = (atom->mask[i] & groupbit) ? cells->adhesion().vertex_bonds(atom->tag[i]) : 0.0;
+    per_vertex[i] = (atom->mask[i] & groupbit) ? adhesion.vertex_bonds(atom->tag[i]) : 0.0;
 }
 
 double ComputeDPolyAdhesion::memory_usage()

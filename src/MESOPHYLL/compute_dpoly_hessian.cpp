@@ -395,8 +395,7 @@ std::vector<double> ComputeDPolyHessian::assemble()
       h.difference(u.x, v.x, d);
       const double s = 0.5 * (u.sigma + v.sigma);
       if (d[0] * d[0] + d[1] * d[1] <= s * s) continue;
-      const double z =
-          cells->adhesion().pair_contact_number(bond.cell1, bond.cell2, adhesion->contact_rule());
+      const double z = adhesion->contact_number(adhesion->counts(), bond.cell1, bond.cell2);
       h.add_distance_term(index.at(bond.atom1), index.at(bond.atom2), d,
                           adhesion->stiffness(bond.type) / z, s);
     }

@@ -7,6 +7,7 @@
 
 #include "atom.h"
 #include "domain.h"
+#include "dpoly_adhesion.h"
 #include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
@@ -118,11 +119,12 @@ std::vector<double> ComputeDPolyTissue::patch_areas()
 std::vector<double> ComputeDPolyTissue::void_fractions()
 {
   const int n = cells->ncells();
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   std::vector<double> local(n, 0.0), total(n, 0.0);
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const int c = cells->cell_index(atom->molecule[i]);
-    if (c >= 0 && cells->adhesion().vertex_bonds(atom->tag[i]) == 0) local[c] += 1.0;
+    if (c >= 0 && adhesion.void_facing(atom->tag[i])) local[c] += 1.0;
   }
   MPI_Allreduce(local.data(), total.data(), n, MPI_DOUBLE, MPI_SUM, world);
   for (int c = 0; c < n; c++) total[c] /= cells->vertex_count(c);
@@ -164,9 +166,10 @@ std::vector<int> ComputeDPolyTissue::neighbour_counts()
       partners[b].insert(p.first);
     }
   }
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   std::vector<int> counts(n);
   for (int c = 0; c < n; c++) {
-    if (const auto *bonded = cells->adhesion().bonded_cells(cells->cell_id(c)))
+    if (const auto *bonded = adhesion.bonded_cells(cells->cell_id(c)))
       for (const auto &other : *bonded) partners[c].insert(other.first);
     counts[c] = (int) partners[c].size();
   }
@@ -183,13 +186,14 @@ void ComputeDPolyTissue::compute_vector()
   invoked_vector = update->ntimestep;
   const Measures m = measure();
   const int n = cells->ncells();
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   double area = 0.0, patch = 0.0, shape = 0.0, neighbours = 0.0, bonds = 0.0;
   for (int c = 0; c < n; c++) {
     area += cells->area(c);
     patch += m.patch_area[c];
     shape += cells->perimeter(c) * cells->perimeter(c) / (4.0 * MathConst::MY_PI * cells->area(c));
     neighbours += m.neighbours[c];
-    bonds += cells->adhesion().cell_bonds(cells->cell_id(c));
+    bonds += adhesion.cell_bonds(cells->cell_id(c));
   }
   const double box = domain->xprd * domain->yprd;
   values[PHI] = area / box;

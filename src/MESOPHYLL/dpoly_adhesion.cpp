@@ -5,6 +5,11 @@
 
 #include "dpoly_adhesion.h"
 
+#include "bond.h"
+#include "bond_hybrid.h"
+#include "force.h"
+#include "lammps.h"
+
 using namespace LAMMPS_NS;
 using namespace DPoly;
 
@@ -37,4 +42,22 @@ int AdhesionCounts::cell_contacts(tagint cell) const
 {
   const auto found = between_cells.find(cell);
   return found == between_cells.end() ? 0 : (int) found->second.size();
+}
+
+CellAdhesion *DPoly::find_cell_adhesion(LAMMPS *lmp)
+{
+  Bond *bond = lmp->force->bond;
+  if (auto *hybrid = dynamic_cast<BondHybrid *>(bond)) {
+    for (int m = 0; m < hybrid->nstyles; m++)
+      if (auto *adhesion = dynamic_cast<CellAdhesion *>(hybrid->styles[m])) return adhesion;
+    return nullptr;
+  }
+  return dynamic_cast<CellAdhesion *>(bond);
+}
+
+const AdhesionCounts &DPoly::adhesion_counts(LAMMPS *lmp)
+{
+  static const AdhesionCounts none;
+  const CellAdhesion *adhesion = find_cell_adhesion(lmp);
+  return adhesion ? adhesion->counts() : none;
 }

@@ -3,9 +3,10 @@
    License, version 2 or later, like LAMMPS itself.
 ------------------------------------------------------------------------- */
 
-// Adhesive bonds between cells as a whole-system list, and the contact numbers derived from it.
-// Every rank holds the same list, sorted by atom IDs, so that every decision made from it (the
-// contact-dependent stiffness, which bond breaks) is the same on any number of ranks.
+// Adhesive bonds between cells as a whole-system list, the bond counts derived from it, and the
+// interface through which the generic DP styles read them from whichever bond style adheres
+// cells (bond_style mesophyll/adhesion implements it). Every rank holds the same list, sorted by
+// atom IDs, so that every decision made from it is the same on any number of ranks.
 
 #ifndef LMP_DPOLY_ADHESION_H
 #define LMP_DPOLY_ADHESION_H
@@ -16,6 +17,8 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+class LAMMPS;
+
 namespace DPoly {
 
   struct AdhesiveBond {
@@ -29,32 +32,23 @@ namespace DPoly {
     }
   };
 
-  // How a cell's contact number z_mu is counted (model.md section 2).
-  enum class ContactRule { BONDS, CELLS };
-
-  // Contact numbers of cells and bond counts of vertices, kept up to date as bonds are removed.
+  // Bonds per vertex and per cell and the cells bonded to each cell, kept up to date as bonds
+  // are removed.
   class AdhesionCounts {
    public:
     void build(const std::vector<AdhesiveBond> &bonds);
     void remove(const AdhesiveBond &bond);
 
     int vertex_bonds(tagint atom) const { return lookup(per_vertex, atom); }
+    // a vertex without adhesive bonds faces air: growth and refinement act there
+    bool void_facing(tagint atom) const { return vertex_bonds(atom) == 0; }
     int cell_bonds(tagint cell) const { return lookup(per_cell, cell); }
-    int cell_contacts(tagint cell) const;
+    int cell_contacts(tagint cell) const;    // number of distinct cells bonded to 'cell'
     // the cells bonded to 'cell', each with the number of bonds between them (nullptr: none)
     const std::unordered_map<tagint, int> *bonded_cells(tagint cell) const
     {
       const auto found = between_cells.find(cell);
       return found == between_cells.end() ? nullptr : &found->second;
-    }
-    double contact_number(tagint cell, ContactRule rule) const
-    {
-      return rule == ContactRule::BONDS ? cell_bonds(cell) : cell_contacts(cell);
-    }
-    // z_munu = (z_mu + z_nu)/2 + 1
-    double pair_contact_number(tagint cell1, tagint cell2, ContactRule rule) const
-    {
-      return 0.5 * (contact_number(cell1, rule) + contact_number(cell2, rule)) + 1.0;
     }
 
    private:
@@ -66,6 +60,21 @@ namespace DPoly {
       return found == m.end() ? 0 : found->second;
     }
   };
+
+  // What a bond style that adheres cells offers the generic styles: its current counts, and a
+  // collective recount from the bonds (fix dpoly/cells asks for it whenever it re-reads cells).
+  class CellAdhesion {
+   public:
+    virtual ~CellAdhesion() noexcept(false) {}    // as LAMMPS styles: they may throw
+    virtual const AdhesionCounts &counts() const = 0;
+    virtual void recount() = 0;
+  };
+
+  // The cell-adhesion bond style of this LAMMPS instance, alone or in bond_style hybrid, or
+  // nullptr if there is none.
+  CellAdhesion *find_cell_adhesion(LAMMPS *lmp);
+  // Its counts, or empty counts (every vertex void-facing) if there is no such style.
+  const AdhesionCounts &adhesion_counts(LAMMPS *lmp);
 
 }    // namespace DPoly
 }    // namespace LAMMPS_NS

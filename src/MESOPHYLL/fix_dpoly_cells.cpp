@@ -7,15 +7,18 @@
 
 #include "atom.h"
 #include "atom_vec.h"
-#include "bond_mesophyll_adhesion.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_adhesion.h"
 #include "dpoly_gather.h"
 #include "dpoly_ring.h"
+#include "dpoly_topology.h"
 #include "error.h"
-#include "force.h"
+#include "fix_dpoly_stage.h"
 #include "group.h"
+#include "min.h"
 #include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,7 +67,7 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
 }
 
-FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const char *who)
+FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 {
   auto hubs = lmp->modify->get_fix_by_style("^dpoly/cells$");
   if (hubs.empty())
@@ -99,6 +102,14 @@ void FixDPolyCells::init()
                "Fix dpoly/cells {}: the area term must count in both energy and virial; "
                "do not use fix_modify energy no or virial no with it",
                id);
+
+  stages.clear();
+  for (Fix *fix : modify->get_fix_list())
+    if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) stages.push_back(stage);
+  std::stable_sort(stages.begin(), stages.end(),
+                   [](const FixDPolyStage *a, const FixDPolyStage *b) {
+                     return a->stage() < b->stage();
+                   });
 }
 
 // before the first force evaluation of a run, so that every style sees current cells
@@ -129,6 +140,27 @@ void FixDPolyCells::post_force(int vflag)
 }
 
 /* ----------------------------------------------------------------------
+   after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
+   order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt
+   before the next stage reads them; the rings are re-read once, at the end. Min::cleanup()
+   reads the minimizer's vectors after this, so they must cover the atoms as they are now.
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::post_run()
+{
+  int changed = FixDPolyStage::NOTHING;
+  for (FixDPolyStage *stage : stages) {
+    if (!stage->acts_after(update->whichflag)) continue;
+    const int change = stage->act();
+    if (change != FixDPolyStage::NOTHING) DPoly::rebuild_special_and_ghosts(lmp);
+    changed |= change;
+  }
+  if (changed & FixDPolyStage::RINGS) refresh_cells();
+  if (changed != FixDPolyStage::NOTHING && update->whichflag == 2)
+    update->minimize->reset_vectors();
+}
+
+/* ----------------------------------------------------------------------
    collective: gather every vertex's ring links and state, check that each cell is one closed
    ring with valid values, index the cells, then check the image flags and orientation
 ------------------------------------------------------------------------- */
@@ -137,7 +169,7 @@ void FixDPolyCells::refresh_cells()
 {
   gather_rings();
   check_ring_images();
-  refresh_adhesion();
+  if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
   measure_cells();
   for (int c = 0; c < ncells(); c++)
     if (areas[c] <= 0.0)
@@ -247,15 +279,6 @@ void FixDPolyCells::gather_rings()
   areas.assign(n, 0.0);
   perimeters.assign(n, 0.0);
   area_slopes.assign(n, 0.0);
-}
-
-void FixDPolyCells::refresh_adhesion()
-{
-  auto *adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
-  if (adhesion)
-    adhesion_counts.build(adhesion->gather_bonds());
-  else
-    adhesion_counts.build({});
 }
 
 int FixDPolyCells::cell_index(tagint molecule) const

@@ -12,9 +12,9 @@ FixStyle(dpoly/cells,FixDPolyCells);
 #ifndef LMP_FIX_DPOLY_CELLS_H
 #define LMP_FIX_DPOLY_CELLS_H
 
-#include "dpoly_adhesion.h"
 #include "fix.h"
 
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -23,7 +23,8 @@ namespace LAMMPS_NS {
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
 // counter-clockwise ring), checks them, and adds the per-cell area term
 //   U_area = (eps_a/2) (a/a0 - 1)^2
-// to forces, energy and virial. Companion styles find it with modify->get_fix_by_style().
+// to forces, energy and virial. After every minimization it runs the stage fixes (check, break,
+// grow, refine: see fix_dpoly_stage.h) in that order. Companion styles find it with find().
 class FixDPolyCells : public Fix {
  public:
   FixDPolyCells(class LAMMPS *, int, char **);
@@ -37,6 +38,7 @@ class FixDPolyCells : public Fix {
   void min_pre_force(int) override {}
   void post_force(int) override;
   void min_post_force(int) override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -44,7 +46,7 @@ class FixDPolyCells : public Fix {
   double memory_usage() override;
 
   // The hub of this LAMMPS instance, for the companion styles; an error names 'who' if none.
-  static FixDPolyCells *find(class LAMMPS *lmp, const char *who);
+  static FixDPolyCells *find(class LAMMPS *lmp, const std::string &who);
 
   // Per-cell values, identical on every rank, current after the last force evaluation.
   int ncells() const { return (int) cell_ids.size(); }
@@ -64,15 +66,10 @@ class FixDPolyCells : public Fix {
   // A cell's vertex IDs in ring order (counter-clockwise), as found when the rings were checked.
   const std::vector<tagint> &ring(int cell) const { return ring_order[cell]; }
 
-  // Adhesive bonds per vertex and contact numbers per cell (bond_style mesophyll/adhesion).
-  const DPoly::AdhesionCounts &adhesion() const { return adhesion_counts; }
-
-  // Re-read cells, ring order, preferred areas and adhesive bonds (collective): call after
-  // changing any of them between runs. Runs by itself at the start of every run and minimize.
+  // Re-read cells, ring order and preferred areas, and have the cell-adhesion bond style
+  // recount its bonds (collective). Runs by itself at the start of every run and minimize, and
+  // after a stage changed the rings.
   void refresh_cells();
-  void refresh_adhesion();
-  // Take the adhesive bonds as given (by a style that just changed them).
-  void set_adhesion(const std::vector<DPoly::AdhesiveBond> &bonds) { adhesion_counts.build(bonds); }
 
  private:
   double area_eps;    // eps_a
@@ -83,7 +80,7 @@ class FixDPolyCells : public Fix {
   std::unordered_map<tagint, int> sparse_index;    // otherwise
   std::unordered_map<tagint, RingNeighbours> rings;
   std::vector<std::vector<tagint>> ring_order;
-  DPoly::AdhesionCounts adhesion_counts;
+  std::vector<class FixDPolyStage *> stages;    // in the order they act
   std::vector<int> vertex_counts;
   std::vector<double> preferred_areas, areas, perimeters, area_slopes;    // area_slope = dU/da
 

@@ -28,8 +28,8 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), target_pressure(0.0), pressure_tolerance(1.0e-6), stop_on_failure(0),
-    minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, cells(nullptr)
+    FixDPolyStage(lmp, narg, arg, CHECK), target_pressure(0.0), pressure_tolerance(1.0e-6),
+    stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -59,36 +59,18 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 7;
   extvector = 0;
   global_freq = 1;
+  restart_global = 0;    // a check keeps nothing across runs
 }
 
-int FixDPolyCheck::setmask()
+// only after minimizations: it reads the minimizer's stop condition and force norm
+int FixDPolyCheck::act()
 {
-  return 0;    // acts in post_run()
-}
-
-void FixDPolyCheck::init()
-{
-  cells = FixDPolyCells::find(lmp, "Fix dpoly/check");
-  // the breaking pass rebuilds ghost atoms and drops the forces this check reads: come first
-  bool seen_self = false;
-  for (int m = 0; m < modify->nfix; m++) {
-    if (modify->fix[m] == this) seen_self = true;
-    if (!seen_self && utils::strmatch(modify->fix[m]->style, "^mesophyll/"))
-      error->all(FLERR,
-                 "Fix dpoly/check {} must be defined before fix {} ({}), which changes the "
-                 "state after a minimization",
-                 id, modify->fix[m]->id, modify->fix[m]->style);
-  }
-}
-
-void FixDPolyCheck::post_run()
-{
-  if (update->whichflag == 2) check();
+  check();
+  return NOTHING;
 }
 
 int FixDPolyCheck::check()
 {
-  if (!cells) init();
   minima++;
   Min *min = update->minimize;
   const int stop = min->stop_condition;
@@ -135,7 +117,8 @@ int FixDPolyCheck::check()
   if (comm->me == 0)
     utils::logmesg(lmp, "fix dpoly/check: minimum {} at step {}: {}, force norm {:.6g}{}{}\n",
                    minima, update->ntimestep, min->stopstr, force_norm,
-                   target_pressure != 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error) : "",
+                   target_pressure != 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error)
+                                          : "",
                    problems.empty() ? "" : "; FAILED" + problems);
   if (problems.empty()) return 0;
   const std::string message =

@@ -12,23 +12,19 @@ FixStyle(dpoly/check,FixDPolyCheck);
 #ifndef LMP_FIX_DPOLY_CHECK_H
 #define LMP_FIX_DPOLY_CHECK_H
 
-#include "fix.h"
+#include "fix_dpoly_stage.h"
 
 namespace LAMMPS_NS {
 
 // Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
 // stopped, the final force norm, |P - P0|/P0, cells with area <= 0 and rings that cross
-// themselves. Warns (default) or stops with an error that names what failed.
-class FixDPolyCheck : public Fix {
+// themselves. Warns (default) or stops with an error that names what failed. The first stage
+// after a minimization: it sees the minimum before any other stage changes it.
+class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
-  int setmask() override;
-  void init() override;
-  void post_run() override;
+  int act() override;
   double compute_vector(int) override;
-
-  // Collective: check the current state as a minimum. Returns the number of problems found.
-  int check();
 
  private:
   double target_pressure;    // P0; <= 0: no pressure check
@@ -37,7 +33,7 @@ class FixDPolyCheck : public Fix {
   bigint minima;
   // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force evaluations
   double last[7];
-  class FixDPolyCells *cells;
+  int check();    // the number of problems found
   int tangled_cells(tagint &first);
 };
 

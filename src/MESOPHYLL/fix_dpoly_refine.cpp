@@ -9,13 +9,12 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_adhesion.h"
 #include "dpoly_gather.h"
 #include "dpoly_ring.h"
-#include "dpoly_topology.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "force.h"
-#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +38,15 @@ double half_preferred_length(double l, double l0)
 }    // namespace
 
 FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), radii(3.0), cap(5.0), void_only(1), after_runs(0), steps(0),
-    added_total(0), added_last(0), cells(nullptr)
+    FixDPolyStage(lmp, narg, arg, REFINE), radii(3.0), cap(5.0), void_only(1), steps(0),
+    added_total(0), added_last(0)
 {
   int iarg = 3;
   while (iarg < narg) {
+    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
+      iarg += taken;
+      continue;
+    }
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("fix dpoly/refine ") + arg[iarg], error);
     const char *key = arg[iarg], *value = arg[iarg + 1];
@@ -57,8 +60,6 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
       if (cap < 1.0) error->all(FLERR, "Fix dpoly/refine cap must be >= 1, got {}", value);
     } else if (strcmp(key, "void") == 0)
       void_only = utils::logical(FLERR, value, false, lmp);
-    else if (strcmp(key, "runs") == 0)
-      after_runs = utils::logical(FLERR, value, false, lmp);
     else
       error->all(FLERR, "Unknown fix dpoly/refine keyword: {}", key);
     iarg += 2;
@@ -70,31 +71,21 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 3;    // vertices added at the last refinement, in all, refinements
   extvector = 0;
   global_freq = 1;
-  restart_global = 1;
-}
-
-int FixDPolyRefine::setmask()
-{
-  return 0;    // acts in post_run()
 }
 
 void FixDPolyRefine::init()
 {
-  cells = FixDPolyCells::find(lmp, "Fix dpoly/refine");
+  FixDPolyStage::init();
   if (atom->map_style == Atom::MAP_NONE)
     error->all(FLERR, "Fix dpoly/refine needs an atom map (atom_modify map array or hash)");
 }
 
-void FixDPolyRefine::post_run()
-{
-  if (update->whichflag == 2 || (after_runs && update->whichflag == 1)) refine();
-}
+/* ----------------------------------------------------------------------
+   the hub rebuilds the special lists and ghosts and re-reads the rings afterwards
+------------------------------------------------------------------------- */
 
-/* ---------------------------------------------------------------------- */
-
-int FixDPolyRefine::refine()
+int FixDPolyRefine::act()
 {
-  if (!cells) init();
   if (initial_vertices.empty())
     for (int c = 0; c < cells->ncells(); c++)
       initial_vertices[cells->cell_id(c)] = cells->vertex_count(c);
@@ -106,14 +97,12 @@ int FixDPolyRefine::refine()
   if (!splits.empty()) {
     insert_vertices(splits);
     rewire_topology(splits);
-    DPoly::rebuild_special_and_ghosts(lmp);
-    cells->refresh_cells();
     added_total += (bigint) splits.size();
   }
   if (comm->me == 0)
     utils::logmesg(lmp, "fix dpoly/refine: step {}: {} vertices added, {} in all\n", steps,
                    added_last, added_total);
-  return added_last;
+  return splits.empty() ? NOTHING : RINGS;
 }
 
 /* ----------------------------------------------------------------------
@@ -124,6 +113,7 @@ int FixDPolyRefine::refine()
 std::vector<FixDPolyRefine::Split> FixDPolyRefine::find_long_segments()
 {
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/refine");
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   double **x = atom->x;
   std::vector<Split> mine;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -136,8 +126,7 @@ std::vector<FixDPolyRefine::Split> FixDPolyRefine::find_long_segments()
                  atom->tag[i]);
     const double length = std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]);
     if (length <= radii * 0.25 * (state.diameter[i] + state.diameter[j])) continue;
-    const auto &adhesion = cells->adhesion();
-    if (void_only && (adhesion.vertex_bonds(atom->tag[i]) || adhesion.vertex_bonds(links.next)))
+    if (void_only && !(adhesion.void_facing(atom->tag[i]) && adhesion.void_facing(links.next)))
       continue;
     mine.push_back(
         {atom->tag[i], links.next, atom->molecule[i], 0, length, state.preferred_length[i]});
@@ -241,6 +230,7 @@ void FixDPolyRefine::insert_vertices(const std::vector<Split> &splits)
     atom->mask[n] = v.mask;
     atom->image[n] = v.image;
     atom->v[n][0] = atom->v[n][1] = atom->v[n][2] = 0.0;
+    atom->f[n][0] = atom->f[n][1] = atom->f[n][2] = 0.0;    // the minimizer's clean-up reads f
     state.diameter[n] = v.diameter;
     state.preferred_length[n] = v.half_length;    // segment new vertex -> second
     state.preferred_angle[n] = 0.0;
@@ -387,27 +377,24 @@ double FixDPolyRefine::compute_vector(int n)
   return (double) steps;
 }
 
-void FixDPolyRefine::write_restart(FILE *fp)
+// steps, vertices added, then per cell: ID and vertex count at the first refinement
+std::vector<double> FixDPolyRefine::restart_state() const
 {
-  if (comm->me != 0) return;
-  std::vector<double> state = {(double) steps, (double) added_total,
-                               (double) initial_vertices.size()};
+  std::vector<double> state = {(double) steps, (double) added_total};
   for (const auto &cell : initial_vertices) {
     state.push_back((double) cell.first);
     state.push_back((double) cell.second);
   }
-  int size = (int) (state.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state.data(), sizeof(double), state.size(), fp);
+  return state;
 }
 
-void FixDPolyRefine::restart(char *buf)
+bool FixDPolyRefine::restore_state(const std::vector<double> &state)
 {
-  const double *state = (const double *) buf;
+  if (state.size() < 2 || state.size() % 2) return false;
   steps = (bigint) state[0];
   added_total = (bigint) state[1];
-  const int ncells = (int) state[2];
   initial_vertices.clear();
-  for (int c = 0; c < ncells; c++)
-    initial_vertices[(tagint) state[3 + 2 * c]] = (int) state[4 + 2 * c];
+  for (size_t k = 2; k < state.size(); k += 2)
+    initial_vertices[(tagint) state[k]] = (int) state[k + 1];
+  return true;
 }

@@ -12,7 +12,7 @@ FixStyle(dpoly/refine,FixDPolyRefine);
 #ifndef LMP_FIX_DPOLY_REFINE_H
 #define LMP_FIX_DPOLY_REFINE_H
 
-#include "fix.h"
+#include "fix_dpoly_stage.h"
 
 #include <map>
 #include <vector>
@@ -23,18 +23,12 @@ namespace LAMMPS_NS {
 // minimization, split every ring segment longer than a given number of vertex radii by a new
 // vertex at its midpoint, so that growing rings do not get coarse. The relaxed ring stays
 // relaxed: the new vertex is straight (theta0 = 0) and the two halves keep the segment's tension.
-class FixDPolyRefine : public Fix {
+class FixDPolyRefine : public FixDPolyStage {
  public:
   FixDPolyRefine(class LAMMPS *, int, char **);
-  int setmask() override;
   void init() override;
-  void post_run() override;
+  int act() override;    // split the long segments
   double compute_vector(int) override;
-  void write_restart(FILE *) override;
-  void restart(char *) override;
-
-  // Collective: split the long segments now; returns the number of vertices added.
-  int refine();
 
  private:
   // A segment to split, as every rank sees it.
@@ -48,15 +42,15 @@ class FixDPolyRefine : public Fix {
   void choose_within_cap(std::vector<Split> &splits);
   void insert_vertices(const std::vector<Split> &splits);
   void rewire_topology(const std::vector<Split> &splits);
+  std::vector<double> restart_state() const override;
+  bool restore_state(const std::vector<double> &) override;
 
   double radii;     // split segments longer than this many vertex radii
   double cap;       // at most cap x the vertex count a cell had at the first refinement
   int void_only;    // split only segments between two vertices without adhesive bonds
-  int after_runs;
   bigint steps, added_total;
   int added_last;
   std::map<tagint, int> initial_vertices;    // per cell, at the first refinement
-  class FixDPolyCells *cells;
 };
 
 }    // namespace LAMMPS_NS

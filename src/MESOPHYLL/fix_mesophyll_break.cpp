@@ -8,36 +8,34 @@
 #include "atom.h"
 #include "bond_mesophyll_adhesion.h"
 #include "comm.h"
-#include "domain.h"
-#include "dpoly_topology.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
-#include "force.h"
 #include "memory.h"
-#include "update.h"
 
 #include <Random123/philox.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <set>
-#include <utility>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using DPoly::AdhesiveBond;
 
 FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1), after_runs(0),
+    FixDPolyStage(lmp, narg, arg, BREAK), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1),
     break_step(0), broken_total(0), broken_threshold(0), broken_stochastic(0), bonds_left(0),
-    local_rows(nullptr), adhesion(nullptr), cells(nullptr)
+    local_rows(nullptr), adhesion(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mesophyll/break", error);
   seed = utils::inumeric(FLERR, arg[3], false, lmp);
   if (seed <= 0) error->all(FLERR, "Fix mesophyll/break seed must be > 0, got {}", arg[3]);
   int iarg = 4;
   while (iarg < narg) {
+    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
+      iarg += taken;
+      continue;
+    }
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("fix mesophyll/break ") + arg[iarg], error);
     if (strcmp(arg[iarg], "beta") == 0) {
@@ -53,8 +51,6 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "edges") == 0) {
       edges_only = utils::logical(FLERR, arg[iarg + 1], false, lmp);
-    } else if (strcmp(arg[iarg], "runs") == 0) {
-      after_runs = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else
       error->all(FLERR, "Unknown fix mesophyll/break keyword: {}", arg[iarg]);
     iarg += 2;
@@ -68,7 +64,6 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
   size_local_cols = 5;
   local_freq = 1;
   size_local_rows = 0;
-  restart_global = 1;
 }
 
 FixMesophyllBreak::~FixMesophyllBreak()
@@ -76,24 +71,10 @@ FixMesophyllBreak::~FixMesophyllBreak()
   memory->destroy(local_rows);
 }
 
-int FixMesophyllBreak::setmask()
-{
-  return 0;    // acts in post_run(), which every fix receives
-}
-
 void FixMesophyllBreak::init()
 {
-  adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
-  if (!adhesion)
-    error->all(FLERR,
-               "Fix mesophyll/break needs bond_style mesophyll/adhesion (alone or in hybrid)");
-  cells = FixDPolyCells::find(lmp, "Fix mesophyll/break");
-}
-
-// after a minimization (update->whichflag == 2), never inside one
-void FixMesophyllBreak::post_run()
-{
-  if (update->whichflag == 2 || (after_runs && update->whichflag == 1)) break_bonds();
+  FixDPolyStage::init();
+  adhesion = BondMesophyllAdhesion::find(lmp, "Fix mesophyll/break");
 }
 
 double FixMesophyllBreak::uniform(int seed, bigint step, tagint atom1, tagint atom2)
@@ -128,7 +109,7 @@ FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
   std::vector<Broken> broken;
   for (const auto &b : bonds) {
     if (b.distance <= b.contact) continue;    // compressed or touching: tension only
-    const double z = counts.pair_contact_number(b.cell1, b.cell2, adhesion->contact_rule());
+    const double z = adhesion->contact_number(counts, b.cell1, b.cell2);
     const double scale = 0.5 * adhesion->stiffness(b.type) / z;
     const double stretch = b.distance / b.contact - 1.0;
     const double energy = scale * stretch * stretch;
@@ -149,9 +130,9 @@ FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
   return broken;
 }
 
-void FixMesophyllBreak::break_bonds()
+// after a minimization, never inside one (or after an MD run, with 'runs yes')
+int FixMesophyllBreak::act()
 {
-  if (!adhesion || !cells) init();
   break_step++;
   const std::vector<AdhesiveBond> bonds = adhesion->gather_bonds();
   const std::vector<Broken> broken = decide(bonds);
@@ -161,50 +142,18 @@ void FixMesophyllBreak::break_bonds()
   broken_total += (bigint) broken.size();
   bonds_left = (bigint) (bonds.size() - broken.size());
 
-  store_local_output(broken);    // before Special, whose communication drops the ghost atoms
+  store_local_output(broken);
   if (!broken.empty()) {
-    remove_bonds(broken);
-    DPoly::rebuild_special_and_ghosts(lmp);
+    std::vector<AdhesiveBond> gone;
+    for (const auto &k : broken) gone.push_back(k.bond);
+    adhesion->remove_bonds(gone);
   }
-  std::vector<AdhesiveBond> survivors;
-  size_t next_broken = 0;
-  for (const auto &b : bonds) {    // both lists are in bond order
-    if (next_broken < broken.size() && broken[next_broken].bond.atom1 == b.atom1 &&
-        broken[next_broken].bond.atom2 == b.atom2)
-      next_broken++;
-    else
-      survivors.push_back(b);
-  }
-  cells->set_adhesion(survivors);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "fix mesophyll/break: step {}: {} bonds broke ({} at threshold, {} "
                    "stochastic), {} adhesive bonds left\n",
                    break_step, broken.size(), broken_threshold, broken_stochastic, bonds_left);
-}
-
-void FixMesophyllBreak::remove_bonds(const std::vector<Broken> &broken)
-{
-  auto key = [](tagint a, tagint b) {
-    return std::make_pair(std::min(a, b), std::max(a, b));
-  };
-  std::set<std::pair<tagint, tagint>> gone;
-  for (const auto &k : broken) gone.insert(key(k.bond.atom1, k.bond.atom2));
-
-  for (int i = 0; i < atom->nlocal; i++) {
-    int m = 0;
-    while (m < atom->num_bond[i]) {
-      const int type = atom->bond_type[i][m];
-      if (adhesion->is_adhesive_type(type) &&
-          gone.count(key(atom->tag[i], atom->bond_atom[i][m]))) {
-        const int last = --atom->num_bond[i];
-        atom->bond_type[i][m] = atom->bond_type[i][last];
-        atom->bond_atom[i][m] = atom->bond_atom[i][last];
-      } else
-        m++;
-    }
-  }
-  atom->nbonds -= (bigint) broken.size();
+  return broken.empty() ? NOTHING : BONDS;
 }
 
 // Each rank lists the broken bonds whose first atom it owns: atom1, atom2, step, r/s, how.
@@ -246,19 +195,16 @@ double FixMesophyllBreak::compute_vector(int n)
   }
 }
 
-void FixMesophyllBreak::write_restart(FILE *fp)
+std::vector<double> FixMesophyllBreak::restart_state() const
 {
-  if (comm->me != 0) return;
-  double state[3] = {(double) break_step, (double) broken_total, (double) bonds_left};
-  int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state, sizeof(double), 3, fp);
+  return {(double) break_step, (double) broken_total, (double) bonds_left};
 }
 
-void FixMesophyllBreak::restart(char *buf)
+bool FixMesophyllBreak::restore_state(const std::vector<double> &state)
 {
-  auto *state = (double *) buf;
+  if (state.size() != 3) return false;
   break_step = (bigint) state[0];
   broken_total = (bigint) state[1];
   bonds_left = (bigint) state[2];
+  return true;
 }

@@ -13,7 +13,7 @@ FixStyle(mesophyll/break,FixMesophyllBreak);
 #define LMP_FIX_MESOPHYLL_BREAK_H
 
 #include "dpoly_adhesion.h"
-#include "fix.h"
+#include "fix_dpoly_stage.h"
 
 #include <vector>
 
@@ -23,19 +23,13 @@ namespace LAMMPS_NS {
 // S2): a stretched bond breaks when U_c >= U0, otherwise with probability exp(-beta (U0 - U_c)).
 // Bonds are visited in the order of their atom IDs and every random number is a function of
 // (seed, break step, the two atom IDs), so the outcome does not depend on the number of ranks.
-class FixMesophyllBreak : public Fix {
+class FixMesophyllBreak : public FixDPolyStage {
  public:
   FixMesophyllBreak(class LAMMPS *, int, char **);
   ~FixMesophyllBreak() override;
-  int setmask() override;
   void init() override;
-  void post_run() override;
+  int act() override;
   double compute_vector(int) override;
-  void write_restart(FILE *) override;
-  void restart(char *) override;
-
-  // Collective: apply the breaking rules to the current state now.
-  void break_bonds();
 
   // The uniform number in (0,1) drawn for a bond at a break step (public for the tests).
   static double uniform(int seed, bigint step, tagint atom1, tagint atom2);
@@ -45,7 +39,6 @@ class FixMesophyllBreak : public Fix {
   double beta;          // inverse temperature of stochastic breaking
   double threshold;     // breaking stretch r*/s; U0 = eps_c/(2 z) (r*/s - 1)^2
   int edges_only;       // stochastic test only at the edges of junctions
-  int after_runs;       // also break after MD runs, not only after minimizations
   bigint break_step;    // number of breaking steps so far: the random stream's step
   bigint broken_total;
   int broken_threshold, broken_stochastic;
@@ -57,11 +50,11 @@ class FixMesophyllBreak : public Fix {
   };
   std::vector<Broken> decide(const std::vector<DPoly::AdhesiveBond> &bonds);
   bool at_junction_edge(const DPoly::AdhesiveBond &b, const DPoly::AdhesionCounts &counts) const;
-  void remove_bonds(const std::vector<Broken> &broken);
   void store_local_output(const std::vector<Broken> &broken);
+  std::vector<double> restart_state() const override;
+  bool restore_state(const std::vector<double> &) override;
   double **local_rows;
   class BondMesophyllAdhesion *adhesion;
-  class FixDPolyCells *cells;
 };
 
 }    // namespace LAMMPS_NS

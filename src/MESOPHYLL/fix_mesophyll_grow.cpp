@@ -8,13 +8,13 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_adhesion.h"
 #include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "math_const.h"
 #include "modify.h"
-#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,14 +26,18 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
+    FixDPolyStage(lmp, narg, arg, GROW), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
     theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1), scale_diameters(1),
-    after_runs(0), need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0),
-    packing_last(-1.0), compaction(0.0), cells(nullptr)
+    need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0), packing_last(-1.0),
+    compaction(0.0)
 {
   bool shape_max_given = false;
   int iarg = 3;
   while (iarg < narg) {
+    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
+      iarg += taken;
+      continue;
+    }
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("fix mesophyll/grow ") + arg[iarg], error);
     const char *key = arg[iarg], *value = arg[iarg + 1];
@@ -70,8 +74,6 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix mesophyll/grow rules must be 'code' or 'paper', got '{}'", value);
     } else if (strcmp(key, "scale_sigma") == 0)
       scale_diameters = utils::logical(FLERR, value, false, lmp);
-    else if (strcmp(key, "runs") == 0)
-      after_runs = utils::logical(FLERR, value, false, lmp);
     else if (strcmp(key, "box") == 0) {
       if (strcmp(value, "relax") == 0)
         need_box_relax = 1;
@@ -90,28 +92,11 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 5;
   extvector = 0;
   global_freq = 1;
-  restart_global = 1;
-}
-
-int FixMesophyllGrow::setmask()
-{
-  return 0;    // acts in post_run()
 }
 
 void FixMesophyllGrow::init()
 {
-  cells = FixDPolyCells::find(lmp, "Fix mesophyll/grow");
-  // per growth step: grow, minimize, record, break. Both act after a minimization, so bonds must
-  // break before the cells grow: the breaking fix has to come first.
-  int mine = -1;
-  for (int m = 0; m < modify->nfix; m++) {
-    if (modify->fix[m] == this) mine = m;
-    if (utils::strmatch(modify->fix[m]->style, "^mesophyll/break") && mine >= 0)
-      error->all(FLERR,
-                 "Fix mesophyll/grow {} is defined before fix mesophyll/break {}: define the "
-                 "breaking fix first, so that bonds break before cells grow",
-                 id, modify->fix[m]->id);
-  }
+  FixDPolyStage::init();
   // the protocol minimizes the enthalpy at constant pressure; growing in a fixed box is a
   // different experiment, and must be asked for
   if (need_box_relax && modify->get_fix_by_style("^box/relax").empty())
@@ -119,11 +104,6 @@ void FixMesophyllGrow::init()
                "Fix mesophyll/grow {} needs fix box/relax (the growth protocol relaxes the box at "
                "constant pressure); use 'box fixed' to grow in a fixed box",
                id);
-}
-
-void FixMesophyllGrow::post_run()
-{
-  if (update->whichflag == 2 || (after_runs && update->whichflag == 1)) grow();
 }
 
 /* ----------------------------------------------------------------------
@@ -137,9 +117,8 @@ void FixMesophyllGrow::post_run()
    (dl_std/n) times the two differences, all from the values before smoothing.
 ------------------------------------------------------------------------- */
 
-void FixMesophyllGrow::grow()
+int FixMesophyllGrow::act()
 {
-  if (!cells) init();
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix mesophyll/grow");
   const int nlocal = atom->nlocal;
   double **x = atom->x;
@@ -173,6 +152,7 @@ void FixMesophyllGrow::grow()
     state.preferred_area[i] = a0 + delta_a;
   }
   steps++;
+  return NOTHING;    // preferred values change, the topology does not
 }
 
 void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexGrowth *> &vertex,
@@ -185,8 +165,9 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
   const double dl_std = 0.5 * (p / a) * delta_a;
   const double shape = p * p / (4.0 * MathConst::MY_PI * a);
   if (shape >= shape_max) cells_above_max++;
+  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   auto is_void = [&](int k) {
-    return cells->adhesion().vertex_bonds(ring[k]) == 0;
+    return adhesion.void_facing(ring[k]);
   };
   auto segment = [&](int k) {
     return vertex[ring[(k + n) % n]]->segment;
@@ -267,19 +248,16 @@ double FixMesophyllGrow::compute_vector(int n)
   }
 }
 
-void FixMesophyllGrow::write_restart(FILE *fp)
+std::vector<double> FixMesophyllGrow::restart_state() const
 {
-  if (comm->me != 0) return;
-  double state[3] = {(double) steps, packing_last, compaction};
-  int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state, sizeof(double), 3, fp);
+  return {(double) steps, packing_last, compaction};
 }
 
-void FixMesophyllGrow::restart(char *buf)
+bool FixMesophyllGrow::restore_state(const std::vector<double> &state)
 {
-  const double *state = (const double *) buf;
+  if (state.size() != 3) return false;
   steps = (bigint) state[0];
   packing_last = state[1];
   compaction = state[2];
+  return true;
 }

@@ -12,7 +12,7 @@ FixStyle(mesophyll/grow,FixMesophyllGrow);
 #ifndef LMP_FIX_MESOPHYLL_GROW_H
 #define LMP_FIX_MESOPHYLL_GROW_H
 
-#include "fix.h"
+#include "fix_dpoly_stage.h"
 
 #include <unordered_map>
 #include <vector>
@@ -22,18 +22,12 @@ namespace LAMMPS_NS {
 // Void-localized growth between minimizations (model.md section 4): every cell's a0 grows by
 // delta_a, vertex diameters scale with sqrt(a0), preferred segment lengths grow only around
 // void-facing vertices, and their preferred angles drift negative, then are smoothed.
-class FixMesophyllGrow : public Fix {
+class FixMesophyllGrow : public FixDPolyStage {
  public:
   FixMesophyllGrow(class LAMMPS *, int, char **);
-  int setmask() override;
   void init() override;
-  void post_run() override;
+  int act() override;    // one growth step
   double compute_vector(int) override;
-  void write_restart(FILE *) override;
-  void restart(char *) override;
-
-  // Collective: one growth step now.
-  void grow();
 
  private:
   // What every rank needs of a vertex to find the void runs of its ring.
@@ -47,17 +41,17 @@ class FixMesophyllGrow : public Fix {
                  std::unordered_map<tagint, double> &new_angle);
 
   void record_packing();
+  std::vector<double> restart_state() const override;
+  bool restore_state(const std::vector<double> &) override;
 
   double delta_a, lambda, c_length, c_bending, theta0_min, shape_max;
   int grow_above_max;    // above shape_max: isometric growth (authors' code) or none (paper)
   int scale_diameters;
-  int after_runs;
   int need_box_relax;
   bigint steps;
   int void_vertices, cells_above_max;
   double packing_last;    // phi at the last minimum (-1 before the first)
   double compaction;      // delta_phi_plus
-  class FixDPolyCells *cells;
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,64 @@
+/* ----------------------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#include "fix_dpoly_stage.h"
+
+#include "comm.h"
+#include "error.h"
+#include "fix_dpoly_cells.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+// Layout of a stage's restart record: version, number of values, the values.
+constexpr int RESTART_VERSION = 1;
+}    // namespace
+
+FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage) :
+    Fix(lmp, narg, arg), cells(nullptr), after_runs(0), my_stage(stage)
+{
+  restart_global = 1;
+}
+
+void FixDPolyStage::init()
+{
+  cells = FixDPolyCells::find(lmp, fmt::format("Fix {}", style).c_str());
+}
+
+int FixDPolyStage::parse_stage_keyword(int iarg, int narg, char **arg)
+{
+  if (strcmp(arg[iarg], "runs") != 0) return 0;
+  if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, fmt::format("fix {} runs", style), error);
+  after_runs = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+  return 2;
+}
+
+void FixDPolyStage::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const std::vector<double> state = restart_state();
+  const int header[2] = {RESTART_VERSION, (int) state.size()};
+  const int size = (int) (sizeof(header) + state.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(header, sizeof(int), 2, fp);
+  fwrite(state.data(), sizeof(double), state.size(), fp);
+}
+
+// LAMMPS hands every rank the whole record; its size is not passed, so the header carries it
+void FixDPolyStage::restart(char *buf)
+{
+  int header[2];
+  memcpy(header, buf, sizeof(header));
+  std::vector<double> state(header[1] >= 0 && header[1] < (1 << 26) ? header[1] : 0);
+  if (header[0] == RESTART_VERSION && state.size() == (size_t) header[1])
+    memcpy(state.data(), buf + sizeof(header), state.size() * sizeof(double));
+  if (header[0] != RESTART_VERSION || state.size() != (size_t) header[1] || !restore_state(state))
+    error->all(FLERR,
+               "Fix {} {}: the restart file holds state this version cannot read (format {}, {} "
+               "values); write the restart file again with this version",
+               style, id, header[0], header[1]);
+}
