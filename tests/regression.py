@@ -2,6 +2,7 @@
 """Rerun an example and compare its thermo output with the example's reference log.
 
     regression.py --lmp BUILD/lmp --example examples/NAME --input in.X --np N [--mpirun CMD]
+                  [--numproc-flag FLAG] [--preflags FLAGS] [--postflags FLAGS]
                   [--rtol R] [--atol A] [--tolerance COLUMN=RTOL,ATOL ...] [--var NAME VALUE ...]
                   [--update] [--expect-difference]
 
@@ -10,11 +11,15 @@ row of every run must match column by column within |new - ref| <= atol + rtol*|
 same columns and rows; --tolerance sets a column's own pair. --update runs the example and writes
 a new reference log instead. --var passes a variable to LAMMPS; with --expect-difference the
 check passes only if the run differs from the reference (to show that a moved trajectory is
-caught). Standard library only.
+caught). With N > 1 the command is CMD FLAG N PREFLAGS lmp POSTFLAGS ..., the order of CMake's
+MPIEXEC_* variables (ctest passes what CMake found). The defaults (-np, --oversubscribe and Open
+MPI's OMPI_ALLOW_RUN_AS_ROOT* variables) suit Open MPI; with --preflags given, the environment is
+left as it is. Standard library only.
 """
 import argparse
 import glob
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -71,12 +76,20 @@ def reference_log(example, name, np):
 
 def run_example(args, workdir, log_name):
     shutil.copytree(args.example, workdir, dirs_exist_ok=True)
-    command = [args.lmp, "-in", args.input, "-log", log_name, "-screen", "none"]
+    command = ["-in", args.input, "-log", log_name, "-screen", "none"]
     for name, value in args.var:
         command += ["-var", name, value]
+    env = dict(os.environ)
     if args.np > 1:
-        command = args.mpirun.split() + ["-np", str(args.np), "--oversubscribe"] + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        if args.preflags is None:    # run by hand: Open MPI's needs, as root on few cores
+            preflags = ["--oversubscribe"]
+            env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        else:
+            preflags = shlex.split(args.preflags)
+        command = (shlex.split(args.mpirun) + [args.numproc_flag, str(args.np)] + preflags
+                   + [args.lmp] + shlex.split(args.postflags) + command)
+    else:
+        command = [args.lmp] + command
     result = subprocess.run(command, cwd=workdir, env=env)
     if result.returncode != 0:
         sys.exit(f"regression: {' '.join(command)} failed with exit code {result.returncode}")
@@ -89,7 +102,13 @@ def main():
     p.add_argument("--example", required=True)
     p.add_argument("--input", required=True)
     p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--mpirun", default="mpirun", help="MPI launcher (CMake: MPIEXEC_EXECUTABLE)")
+    p.add_argument("--numproc-flag", default="-np",
+                   help="its rank-count flag (MPIEXEC_NUMPROC_FLAG)")
+    p.add_argument("--preflags", default=None,
+                   help="flags before the program (MPIEXEC_PREFLAGS and MESOPHYLL_MPIEXEC_FLAGS; "
+                        "default --oversubscribe, with Open MPI's run-as-root variables)")
+    p.add_argument("--postflags", default="", help="flags after the program (MPIEXEC_POSTFLAGS)")
     p.add_argument("--rtol", type=float, default=1e-8)
     p.add_argument("--atol", type=float, default=1e-12)
     p.add_argument("--tolerance", action="append", default=[], metavar="COLUMN=RTOL,ATOL",

@@ -1,6 +1,7 @@
-// The growth protocol end to end (model.md sections 4 and 5): the 16-cell confluent tissue of
-// examples/tissue grows for three steps, each minimized at constant pressure with fix box/relax
-// and min_style fire/nph, as examples/mesophyll/in.mesophyll does.
+// The growth protocol end to end (doc/Howto_mesophyll.rst, sections "Growth" and "Enthalpy
+// minimization"): the 16-cell confluent tissue of examples/tissue grows for three steps, each
+// minimized at constant pressure with fix box/relax and min_style fire/nph, as
+// examples/mesophyll/in.mesophyll does.
 #include "test_helpers.h"
 
 #include "gtest/gtest.h"

@@ -1,6 +1,6 @@
-// Growth rules of fix mesophyll/grow (model.md section 4) on hand-made rings whose void runs are
-// known: exact changes of l0, theta0, a0 and sigma, the clamp at theta0_min, and both calA_max
-// rules. Runs on any number of ranks.
+// Growth rules of fix mesophyll/grow (doc/Howto_mesophyll.rst, section "Growth") on hand-made
+// rings whose void runs are known: exact changes of l0, theta0, a0 and sigma, the clamp at
+// theta0_min, and both calA_max rules. Runs on any number of ranks.
 #include "test_helpers.h"
 
 #include "gtest/gtest.h"
@@ -60,7 +60,7 @@ struct Expected {
   std::vector<double> l0, theta0;
 };
 
-// model.md section 4 written out for one ring
+// the growth rules (doc/Howto_mesophyll.rst, section "Growth") written out for one ring
 Expected expected_growth(const Ring &r, double theta_start, double delta_a, double lambda,
                          double c_l, double c_b, double theta_min, double above_factor,
                          bool below_max)

@@ -8,9 +8,10 @@ read with:
     fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes
     read_data cells.data fix Vertices NULL Vertices
 
-Preferred values follow model.md section 1: perimeter p0 from the shape parameter
-calA0 = p0^2/(4 pi a0), given relative to the regular n-gon's own value; l0 = p0/n; sigma = l0;
-theta0 = 2 pi/n (the regular polygon's turning angle).
+Preferred values follow the paper's initial cells (doc/Howto_mesophyll.rst, section "The initial
+tissue"): perimeter p0 from the shape parameter calA0 = p0^2/(4 pi a0), given relative to the
+regular n-gon's own value; l0 = p0/n; sigma = l0; theta0 = 2 pi/n (the regular polygon's turning
+angle).
 Vertices are wrapped into the box with image flags that keep every ring whole.
 """
 import argparse
