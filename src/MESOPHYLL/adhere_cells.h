@@ -17,7 +17,8 @@ CommandStyle(adhere_cells,AdhereCells);
 namespace LAMMPS_NS {
 
 // adhere_cells group-ID btype: bond every overlapping pair of vertices (r < s) that belong to
-// different cells, with an adhesive bond of type btype (model.md section 2, initial bonds).
+// different cells, with an adhesive bond of type btype: the initial bonds of the Howto's
+// "Contact repulsion and adhesion".
 class AdhereCells : public Command {
  public:
   AdhereCells(class LAMMPS *lmp) : Command(lmp) {}

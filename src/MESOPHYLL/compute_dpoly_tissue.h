@@ -18,7 +18,7 @@ ComputeStyle(dpoly/tissue,ComputeDPolyTissue);
 
 namespace LAMMPS_NS {
 
-// What the paper reports of a tissue (model.md section 6): packing fractions, shape parameters,
+// What the paper reports of a tissue (doc/Howto_mesophyll.rst, "Observables"): packing fractions, shape parameters,
 // contact numbers, void-facing vertices; globally and per cell.
 class ComputeDPolyTissue : public Compute {
  public:

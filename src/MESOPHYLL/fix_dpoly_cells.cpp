@@ -105,7 +105,10 @@ void FixDPolyCells::init()
 
   stages.clear();
   for (Fix *fix : modify->get_fix_list())
-    if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) stages.push_back(stage);
+    if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) {
+      stage->attach(this);
+      stages.push_back(stage);
+    }
   std::stable_sort(stages.begin(), stages.end(),
                    [](const FixDPolyStage *a, const FixDPolyStage *b) {
                      return a->stage() < b->stage();

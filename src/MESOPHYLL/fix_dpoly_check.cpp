@@ -25,36 +25,31 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, CHECK), target_pressure(0.0), pressure_tolerance(1.0e-6),
     stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
 {
-  int iarg = 3;
-  while (iarg < narg) {
-    if (iarg + 2 > narg)
-      utils::missing_cmd_args(FLERR, std::string("fix dpoly/check ") + arg[iarg], error);
-    if (strcmp(arg[iarg], "pressure") == 0) {
-      target_pressure = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+  parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
+    if (strcmp(key, "pressure") == 0) {
+      target_pressure = utils::numeric(FLERR, value, false, lmp);
       if (target_pressure == 0.0)    // the check is relative to |P0|
-        error->all(FLERR, "Fix dpoly/check pressure must be nonzero, got {}", arg[iarg + 1]);
-    } else if (strcmp(arg[iarg], "tolerance") == 0) {
-      pressure_tolerance = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        error->all(FLERR, "Fix dpoly/check pressure must be nonzero, got {}", value);
+    } else if (strcmp(key, "tolerance") == 0) {
+      pressure_tolerance = utils::numeric(FLERR, value, false, lmp);
       if (pressure_tolerance <= 0.0)
-        error->all(FLERR, "Fix dpoly/check tolerance must be > 0, got {}", arg[iarg + 1]);
-    } else if (strcmp(arg[iarg], "action") == 0) {
-      if (strcmp(arg[iarg + 1], "warn") == 0)
+        error->all(FLERR, "Fix dpoly/check tolerance must be > 0, got {}", value);
+    } else if (strcmp(key, "action") == 0) {
+      if (strcmp(value, "warn") == 0)
         stop_on_failure = 0;
-      else if (strcmp(arg[iarg + 1], "error") == 0)
+      else if (strcmp(value, "error") == 0)
         stop_on_failure = 1;
       else
-        error->all(FLERR, "Fix dpoly/check action must be 'warn' or 'error', got '{}'",
-                   arg[iarg + 1]);
+        error->all(FLERR, "Fix dpoly/check action must be 'warn' or 'error', got '{}'", value);
     } else
-      error->all(FLERR, "Unknown fix dpoly/check keyword: {}", arg[iarg]);
-    iarg += 2;
-  }
+      return false;
+    return true;
+  });
   vector_flag = 1;
   size_vector = 7;
   extvector = 0;

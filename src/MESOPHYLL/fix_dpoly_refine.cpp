@@ -22,7 +22,6 @@
 #include <unordered_map>
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 
 namespace {
 
@@ -41,15 +40,7 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, REFINE), radii(3.0), cap(5.0), void_only(1), steps(0),
     added_total(0), added_last(0)
 {
-  int iarg = 3;
-  while (iarg < narg) {
-    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
-      iarg += taken;
-      continue;
-    }
-    if (iarg + 2 > narg)
-      utils::missing_cmd_args(FLERR, std::string("fix dpoly/refine ") + arg[iarg], error);
-    const char *key = arg[iarg], *value = arg[iarg + 1];
+  parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
     if (strcmp(key, "length") == 0) {
       radii = utils::numeric(FLERR, value, false, lmp);
       // below 2 radii (one diameter) the halves' vertices would overlap their new neighbours
@@ -61,9 +52,9 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
     } else if (strcmp(key, "void") == 0)
       void_only = utils::logical(FLERR, value, false, lmp);
     else
-      error->all(FLERR, "Unknown fix dpoly/refine keyword: {}", key);
-    iarg += 2;
-  }
+      return false;
+    return true;
+  });
   if (!atom->molecule_flag || !atom->avec->bonds_allow || !atom->avec->angles_allow)
     error->all(FLERR, "Fix dpoly/refine needs an atom style with molecule IDs, bonds and angles");
 

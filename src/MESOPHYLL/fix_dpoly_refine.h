@@ -19,7 +19,7 @@ FixStyle(dpoly/refine,FixDPolyRefine);
 
 namespace LAMMPS_NS {
 
-// Resolution control of the deformable polygons (model.md sections 4 and 6): after each
+// Resolution control of the deformable polygons (doc/Howto_mesophyll.rst, "Vertex insertion"): after each
 // minimization, split every ring segment longer than a given number of vertex radii by a new
 // vertex at its midpoint, so that growing rings do not get coarse. The relaxed ring stays
 // relaxed: the new vertex is straight (theta0 = 0) and the two halves keep the segment's tension.

@@ -7,7 +7,7 @@
 
 #include "comm.h"
 #include "error.h"
-#include "fix_dpoly_cells.h"
+#include "modify.h"
 
 #include <cstring>
 
@@ -24,17 +24,27 @@ FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage) :
   restart_global = 1;
 }
 
+// the hub may be defined after this fix, so it attaches itself later in the same init()
 void FixDPolyStage::init()
 {
-  cells = FixDPolyCells::find(lmp, fmt::format("Fix {}", style).c_str());
+  if (modify->get_fix_by_style("^dpoly/cells$").empty())
+    error->all(FLERR,
+               "Fix {} needs fix dpoly/cells, which keeps the cells and runs this fix after "
+               "every minimization",
+               style);
 }
 
-int FixDPolyStage::parse_stage_keyword(int iarg, int narg, char **arg)
+void FixDPolyStage::parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword)
 {
-  if (strcmp(arg[iarg], "runs") != 0) return 0;
-  if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, fmt::format("fix {} runs", style), error);
-  after_runs = utils::logical(FLERR, arg[iarg + 1], false, lmp);
-  return 2;
+  for (int iarg = first; iarg < narg; iarg += 2) {
+    if (iarg + 2 > narg)
+      utils::missing_cmd_args(FLERR, fmt::format("fix {} {}", style, arg[iarg]), error);
+    const char *key = arg[iarg], *value = arg[iarg + 1];
+    if (my_stage != CHECK && strcmp(key, "runs") == 0)
+      after_runs = utils::logical(FLERR, value, false, lmp);
+    else if (!keyword(key, value))
+      error->all(FLERR, "Unknown fix {} keyword: {}", style, key);
+  }
 }
 
 void FixDPolyStage::write_restart(FILE *fp)

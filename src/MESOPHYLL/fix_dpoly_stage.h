@@ -8,6 +8,7 @@
 
 #include "fix.h"
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -31,16 +32,21 @@ class FixDPolyStage : public Fix {
   void restart(char *) override;
 
   Stage stage() const { return my_stage; }
+  // fix dpoly/cells hands itself to its stages when it initializes, before any act()
+  void attach(class FixDPolyCells *hub) { cells = hub; }
   bool acts_after(int whichflag) const { return whichflag == 2 || (after_runs && whichflag == 1); }
   // Collective: act on the current state; returns the Change flags.
   virtual int act() = 0;
 
  protected:
-  class FixDPolyCells *cells;    // set by init()
+  class FixDPolyCells *cells;    // the hub that calls act()
   int after_runs;                // also act after MD runs, not only after minimizations
 
-  // Parses a keyword all stages share at arg[iarg]; returns the words it took (0: not one).
-  int parse_stage_keyword(int iarg, int narg, char **arg);
+  // Reads the keyword/value pairs arg[first..narg): 'runs' here (not for the check, which reads
+  // the minimizer), the stage's own through 'keyword', which returns false for one it does not
+  // know. An odd word or an unknown keyword is an error that names it.
+  using KeywordReader = std::function<bool(const char *key, const char *value)>;
+  void parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword);
 
   // The global state a stage keeps in restart files, and how it takes it back; restore()
   // returns false if the values cannot be this fix's (their number, for example).

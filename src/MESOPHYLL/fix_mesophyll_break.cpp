@@ -19,7 +19,6 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 using DPoly::AdhesiveBond;
 
 FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
@@ -30,31 +29,22 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mesophyll/break", error);
   seed = utils::inumeric(FLERR, arg[3], false, lmp);
   if (seed <= 0) error->all(FLERR, "Fix mesophyll/break seed must be > 0, got {}", arg[3]);
-  int iarg = 4;
-  while (iarg < narg) {
-    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
-      iarg += taken;
-      continue;
-    }
-    if (iarg + 2 > narg)
-      utils::missing_cmd_args(FLERR, std::string("fix mesophyll/break ") + arg[iarg], error);
-    if (strcmp(arg[iarg], "beta") == 0) {
-      beta = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (beta <= 0.0)
-        error->all(FLERR, "Fix mesophyll/break beta must be > 0, got {}", arg[iarg + 1]);
-    } else if (strcmp(arg[iarg], "threshold") == 0) {
-      threshold = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+  parse_keywords(4, narg, arg, [&](const char *key, const char *value) {
+    if (strcmp(key, "beta") == 0) {
+      beta = utils::numeric(FLERR, value, false, lmp);
+      if (beta <= 0.0) error->all(FLERR, "Fix mesophyll/break beta must be > 0, got {}", value);
+    } else if (strcmp(key, "threshold") == 0) {
+      threshold = utils::numeric(FLERR, value, false, lmp);
       if (threshold <= 1.0)
         error->all(FLERR,
-                   "Fix mesophyll/break threshold (breaking stretch r*/s) must be > 1, "
-                   "got {}",
-                   arg[iarg + 1]);
-    } else if (strcmp(arg[iarg], "edges") == 0) {
-      edges_only = utils::logical(FLERR, arg[iarg + 1], false, lmp);
-    } else
-      error->all(FLERR, "Unknown fix mesophyll/break keyword: {}", arg[iarg]);
-    iarg += 2;
-  }
+                   "Fix mesophyll/break threshold (breaking stretch r*/s) must be > 1, got {}",
+                   value);
+    } else if (strcmp(key, "edges") == 0)
+      edges_only = utils::logical(FLERR, value, false, lmp);
+    else
+      return false;
+    return true;
+  });
 
   vector_flag = 1;
   size_vector = 5;
@@ -181,18 +171,9 @@ void FixMesophyllBreak::store_local_output(const std::vector<Broken> &broken)
 
 double FixMesophyllBreak::compute_vector(int n)
 {
-  switch (n) {
-    case 0:
-      return broken_threshold;
-    case 1:
-      return broken_stochastic;
-    case 2:
-      return bonds_left;
-    case 3:
-      return broken_total;
-    default:
-      return break_step;
-  }
+  const double values[] = {(double) broken_threshold, (double) broken_stochastic,
+                           (double) bonds_left, (double) broken_total, (double) break_step};
+  return values[n];
 }
 
 std::vector<double> FixMesophyllBreak::restart_state() const

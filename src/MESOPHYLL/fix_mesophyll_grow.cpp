@@ -23,7 +23,6 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, GROW), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
@@ -32,15 +31,7 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
     compaction(0.0)
 {
   bool shape_max_given = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    if (const int taken = parse_stage_keyword(iarg, narg, arg)) {
-      iarg += taken;
-      continue;
-    }
-    if (iarg + 2 > narg)
-      utils::missing_cmd_args(FLERR, std::string("fix mesophyll/grow ") + arg[iarg], error);
-    const char *key = arg[iarg], *value = arg[iarg + 1];
+  parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
     auto number = [&](double lo, bool lo_open) {
       const double v = utils::numeric(FLERR, value, false, lmp);
       if (lo_open ? !(v > lo) : !(v >= lo))
@@ -82,9 +73,9 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
       else
         error->all(FLERR, "Fix mesophyll/grow box must be 'relax' or 'fixed', got '{}'", value);
     } else
-      error->all(FLERR, "Unknown fix mesophyll/grow keyword: {}", key);
-    iarg += 2;
-  }
+      return false;
+    return true;
+  });
 
   vector_flag = 1;
   // growth steps, void-facing vertices, cells at or above calA_max, phi at the last minimum,
@@ -107,7 +98,7 @@ void FixMesophyllGrow::init()
 }
 
 /* ----------------------------------------------------------------------
-   model.md section 4, with dl_std = (p/a) delta_a / 2 from the current p and a:
+   the Howto's growth rule (paper S3), with dl_std = (p/a) delta_a / 2 from the current p and a:
    void-facing vertex i (no adhesive bond), in a void run of length b_v, cell mean run length
    <b_v>:  dl_i = (lambda dl_std / n) [(1 - c_L) + c_L (<b_v> - b_v)/p]   if calA < calA_max,
            dl_i = dl_std/n (rules code) or 0 (rules paper)                 otherwise;
@@ -234,18 +225,9 @@ void FixMesophyllGrow::record_packing()
 
 double FixMesophyllGrow::compute_vector(int n)
 {
-  switch (n) {
-    case 0:
-      return steps;
-    case 1:
-      return void_vertices;
-    case 2:
-      return cells_above_max;
-    case 3:
-      return packing_last;
-    default:
-      return compaction;
-  }
+  const double values[] = {(double) steps, (double) void_vertices, (double) cells_above_max,
+                           packing_last, compaction};
+  return values[n];
 }
 
 std::vector<double> FixMesophyllGrow::restart_state() const

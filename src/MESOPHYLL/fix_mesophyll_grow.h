@@ -19,7 +19,7 @@ FixStyle(mesophyll/grow,FixMesophyllGrow);
 
 namespace LAMMPS_NS {
 
-// Void-localized growth between minimizations (model.md section 4): every cell's a0 grows by
+// Void-localized growth between minimizations (doc/Howto_mesophyll.rst, "Growth"): every cell's a0 grows by
 // delta_a, vertex diameters scale with sqrt(a0), preferred segment lengths grow only around
 // void-facing vertices, and their preferred angles drift negative, then are smoothed.
 class FixMesophyllGrow : public FixDPolyStage {
