@@ -3,6 +3,7 @@
 // unless it says otherwise; ctest runs this binary on 1, 2 and 4.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -315,14 +318,14 @@ TEST_F(BadInput, ThreeDimensions)
 {
   std::string cmds = setup_commands(square_data(CCW_ANGLES)) + "run 0 post no";
   cmds.replace(cmds.find("dimension 2"), 11, "dimension 3");
-  EXPECT_NE(error_of(cmds).find("needs a 2d simulation"), std::string::npos);
+  EXPECT_THAT(error_of(cmds), HasSubstr("needs a 2d simulation"));
 }
 
 TEST_F(BadInput, MissingVertexState)
 {
   const std::string msg =
       error_of(setup_commands(square_data(CCW_ANGLES)) + "unfix Vertices\nrun 0 post no");
-  EXPECT_NE(msg.find("needs the per-atom property d_sigma"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("needs the per-atom property d_sigma"));
 }
 
 TEST_F(BadInput, VertexStateWithoutGhosts)
@@ -330,34 +333,34 @@ TEST_F(BadInput, VertexStateWithoutGhosts)
   std::string cmds = setup_commands(square_data(CCW_ANGLES)) + "run 0 post no";
   cmds.replace(cmds.find(" ghost yes"), 10, "");
   const std::string msg = error_of(cmds);
-  EXPECT_NE(msg.find("on ghost atoms too"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("on ghost atoms too"));
 }
 
 TEST_F(BadInput, NonPositiveStateValues)
 {
   const std::string base = setup_commands(square_data(CCW_ANGLES));
   std::string msg = error_of(base + "set atom 3 d_a0 -0.5\nrun 0 post no");
-  EXPECT_NE(msg.find("a0 = -0.5"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("a0 = -0.5"));
   msg = error_of(base + "set group all d_a0 0\nrun 0 post no");
-  EXPECT_NE(msg.find("a0 = 0;"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("a0 = 0;")) << msg;
   msg = error_of(base + "set atom 2 d_l0 0\nrun 0 post no");
-  EXPECT_NE(msg.find("vertex 2 has l0 = 0"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("vertex 2 has l0 = 0"));
   msg = error_of(base + "set atom 4 d_sigma -1\nrun 0 post no");
-  EXPECT_NE(msg.find("vertex 4 has sigma = -1"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("vertex 4 has sigma = -1"));
 }
 
 TEST_F(BadInput, PreferredAreaDiffersWithinCell)
 {
   const std::string msg =
       error_of(setup_commands(square_data(CCW_ANGLES)) + "set atom 2 d_a0 2.0\nrun 0 post no");
-  EXPECT_NE(msg.find("cell 1 has different a0"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("cell 1 has different a0"));
 }
 
 TEST_F(BadInput, VertexWithTwoAngles)
 {
   const std::string msg = error_of(
       setup_commands(square_data(CCW_ANGLES + std::string("5 1 1 2 4\n"), 5)) + "run 0 post no");
-  EXPECT_NE(msg.find("vertex 2 is the centre of 2 angles"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("vertex 2 is the centre of 2 angles"));
 }
 
 TEST_F(BadInput, RingThatDoesNotClose)
@@ -366,14 +369,14 @@ TEST_F(BadInput, RingThatDoesNotClose)
   const std::string msg =
       error_of(setup_commands(square_data("1 1 4 1 2\n2 1 1 2 3\n3 1 2 3 4\n4 1 1 4 3\n")) +
                "run 0 post no");
-  EXPECT_NE(msg.find("not a vertex of the same ring pointing back"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("not a vertex of the same ring pointing back"));
 }
 
 TEST_F(BadInput, RingSplitBetweenTwoCells)
 {
   const std::string msg =
       error_of(setup_commands(square_data(CCW_ANGLES)) + "set atom 3*4 mol 2\nrun 0 post no");
-  EXPECT_NE(msg.find("not a vertex of the same ring"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("not a vertex of the same ring"));
 }
 
 TEST_F(BadInput, RingOfTwoVertices)
@@ -390,7 +393,7 @@ TEST_F(BadInput, RingOfTwoVertices)
   }
   // a ring of two needs angles that repeat an atom, which LAMMPS refuses when reading them
   const std::string msg = error_of(setup_commands(path) + "run 0 post no");
-  EXPECT_NE(msg.find("Invalid atom ID in Angles section"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("Invalid atom ID in Angles section"));
 }
 
 TEST_F(BadInput, ClockwiseRing)
@@ -398,7 +401,7 @@ TEST_F(BadInput, ClockwiseRing)
   const std::string msg =
       error_of(setup_commands(square_data("1 1 2 1 4\n2 1 3 2 1\n3 1 4 3 2\n4 1 1 4 3\n")) +
                "run 0 post no");
-  EXPECT_NE(msg.find("cell 1 has area -1 <= 0"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("cell 1 has area -1 <= 0"));
 }
 
 TEST_F(BadInput, BondAcrossTheRing)
@@ -406,25 +409,22 @@ TEST_F(BadInput, BondAcrossTheRing)
   const std::string msg =
       error_of(setup_commands(square_data(CCW_ANGLES, 4, "1 1 1 2\n2 1 2 3\n3 1 3 4\n4 1 1 3\n")) +
                "run 0 post no");
-  EXPECT_NE(msg.find("bond 1-3 is not a segment of a ring"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("bond 1-3 is not a segment of a ring"));
 }
 
 TEST_F(BadInput, BadCoefficientsAndKeywords)
 {
   const std::string base = setup_commands(square_data(CCW_ANGLES));
-  EXPECT_NE(error_of(base + "bond_coeff 1 -2").find("eps_l must be >= 0, got -2"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "bond_coeff 1 1 2").find("takes one coefficient"), std::string::npos);
-  EXPECT_NE(error_of(base + "angle_coeff 1 -0.1").find("eps_b must be >= 0, got -0.1"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix more all dpoly/cells eps_a -3").find("eps_a must be >= 0, got -3"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix more all dpoly/cells stiff 3").find("keyword: stiff"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix more all dpoly/cells\nrun 0").find("Only one fix dpoly/cells"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix_modify cells energy no\nrun 0").find("must count in both"),
-            std::string::npos);
+  EXPECT_THAT(error_of(base + "bond_coeff 1 -2"), HasSubstr("eps_l must be >= 0, got -2"));
+  EXPECT_THAT(error_of(base + "bond_coeff 1 1 2"), HasSubstr("takes one coefficient"));
+  EXPECT_THAT(error_of(base + "angle_coeff 1 -0.1"), HasSubstr("eps_b must be >= 0, got -0.1"));
+  EXPECT_THAT(error_of(base + "fix more all dpoly/cells eps_a -3"),
+              HasSubstr("eps_a must be >= 0, got -3"));
+  EXPECT_THAT(error_of(base + "fix more all dpoly/cells stiff 3"), HasSubstr("keyword: stiff"));
+  EXPECT_THAT(error_of(base + "fix more all dpoly/cells\nrun 0"),
+              HasSubstr("Only one fix dpoly/cells"));
+  EXPECT_THAT(error_of(base + "fix_modify cells energy no\nrun 0"),
+              HasSubstr("must count in both"));
 }
 
 TEST_F(BadInput, BoxRelaxNeedsLineSearchAndPeriodicBox)
@@ -432,11 +432,9 @@ TEST_F(BadInput, BoxRelaxNeedsLineSearchAndPeriodicBox)
   const std::string base = setup_commands(square_data(CCW_ANGLES));
   std::string msg =
       error_of(base + "fix relax all box/relax iso 0.001\nmin_style fire\nminimize 0 1e-8 10 10");
-  EXPECT_NE(msg.find("Cannot use a damped dynamics min style with fix box/relax"),
-            std::string::npos)
-      << msg;
+  EXPECT_THAT(msg, HasSubstr("Cannot use a damped dynamics min style with fix box/relax"));
   std::string fixed = base + "fix relax all box/relax iso 0.001\nminimize 0 1e-8 10 10";
   fixed.replace(fixed.find("boundary p p p"), 14, "boundary f p p");
   msg = error_of(fixed);
-  EXPECT_NE(msg.find("non-periodic x dimension"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("non-periodic x dimension"));
 }

@@ -1,11 +1,14 @@
 // fix dpoly/check: every minimum is checked and a failure is reported, never carried on silently.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <fstream>
 #include <iterator>
 #include <memory>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -62,20 +65,18 @@ TEST(Check, UnfinishedMinimizationWarnsOrStops)
   std::ifstream in(log);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // the log line names the failure even after LAMMPS has stopped printing warnings
-  EXPECT_NE(text.find("fix dpoly/check: minimum 1 at step 5: max iterations, force norm"),
-            std::string::npos)
-      << text;
-  EXPECT_NE(text.find("; FAILED; the minimizer stopped without converging (max iterations)"),
-            std::string::npos);
+  EXPECT_THAT(text, HasSubstr("fix dpoly/check: minimum 1 at step 5: max iterations, force norm"));
+  EXPECT_THAT(text,
+              HasSubstr("; FAILED; the minimizer stopped without converging (max iterations)"));
 
   LammpsSession s;
   const std::string msg = s.try_run(
       contact_commands(data_file("overlapping.data")) +
       "fix check all dpoly/check pressure 1.0e-3 action error\nadhere_cells all 2\n"
       "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\nmin_style cg\nminimize 0.0 1.0e-10 5 50");
-  EXPECT_NE(msg.find("minimum 1 at step 5; the minimizer stopped without converging (max "
-                     "iterations)"),
-            std::string::npos)
+  EXPECT_THAT(msg,
+              HasSubstr("minimum 1 at step 5; the minimizer stopped without converging (max "
+                        "iterations)"))
       << msg;
 }
 
@@ -99,8 +100,8 @@ TEST(Check, BadInput)
     LammpsSession s;
     return s.try_run(contact_commands(data_file("overlapping.data")) + line + "\nrun 0 post no");
   };
-  EXPECT_NE(error_of("fix c all dpoly/check pressure 0").find("pressure must be nonzero, got 0"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix c all dpoly/check action shout").find("must be 'warn' or 'error'"),
-            std::string::npos);
+  EXPECT_THAT(error_of("fix c all dpoly/check pressure 0"),
+              HasSubstr("pressure must be nonzero, got 0"));
+  EXPECT_THAT(error_of("fix c all dpoly/check action shout"),
+              HasSubstr("must be 'warn' or 'error'"));
 }

@@ -3,6 +3,7 @@
 // minimizations). Runs on any number of ranks unless a test says otherwise.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <cctype>
@@ -12,6 +13,8 @@
 #include <set>
 #include <sstream>
 #include <utility>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -338,22 +341,18 @@ TEST_F(BadContacts, Settings)
   const std::string data = data_file("overlapping.data");
   std::string cmds = contact_commands(data);
   cmds.replace(cmds.find("z bonds"), 7, "z neighbours");
-  EXPECT_NE(error_of(cmds).find("z must be 'bonds' or 'cells', got 'neighbours'"),
-            std::string::npos);
+  EXPECT_THAT(error_of(cmds), HasSubstr("z must be 'bonds' or 'cells', got 'neighbours'"));
   const std::string base = contact_commands(data);
-  EXPECT_NE(error_of(base + "fix b all mesophyll/break 5 beta 0").find("beta must be > 0, got 0"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix b all mesophyll/break 5 threshold 1").find("must be > 1, got 1"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix b all mesophyll/break -5").find("seed must be > 0, got -5"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "fix b all mesophyll/break 5 gamma 2").find("keyword: gamma"),
-            std::string::npos);
-  EXPECT_NE(error_of(base + "pair_coeff * * -1").find("eps_c must be >= 0, got -1"),
-            std::string::npos);
-  EXPECT_NE(
-      error_of(base + "bond_coeff 2 mesophyll/adhesion -1").find("eps_c must be >= 0, got -1"),
-      std::string::npos);
+  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 beta 0"),
+              HasSubstr("beta must be > 0, got 0"));
+  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 threshold 1"),
+              HasSubstr("must be > 1, got 1"));
+  EXPECT_THAT(error_of(base + "fix b all mesophyll/break -5"),
+              HasSubstr("seed must be > 0, got -5"));
+  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 gamma 2"), HasSubstr("keyword: gamma"));
+  EXPECT_THAT(error_of(base + "pair_coeff * * -1"), HasSubstr("eps_c must be >= 0, got -1"));
+  EXPECT_THAT(error_of(base + "bond_coeff 2 mesophyll/adhesion -1"),
+              HasSubstr("eps_c must be >= 0, got -1"));
 }
 
 TEST_F(BadContacts, AdhesiveBondInsideOneCell)
@@ -363,35 +362,32 @@ TEST_F(BadContacts, AdhesiveBondInsideOneCell)
   t.adhesive = {{1, 3}};
   const std::string msg =
       error_of(contact_commands(write_tissue(t, "inside.data")) + "run 0 post no");
-  EXPECT_NE(msg.find("bond 1-3 joins two vertices of cell 1"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("bond 1-3 joins two vertices of cell 1"));
 }
 
 TEST_F(BadContacts, AdhereCellsRefusesNonsense)
 {
   const std::string overlapping = contact_commands(data_file("overlapping.data"));
-  EXPECT_NE(error_of(overlapping + "adhere_cells all 3").find("bond type 3 is not between 1 and 2"),
-            std::string::npos);
-  EXPECT_NE(error_of(overlapping + "adhere_cells all 1").find("bond type 1 is not a bond type of"),
-            std::string::npos);
-  EXPECT_NE(error_of(overlapping + "adhere_cells nogroup 2").find("group nogroup does not exist"),
-            std::string::npos);
+  EXPECT_THAT(error_of(overlapping + "adhere_cells all 3"),
+              HasSubstr("bond type 3 is not between 1 and 2"));
+  EXPECT_THAT(error_of(overlapping + "adhere_cells all 1"),
+              HasSubstr("bond type 1 is not a bond type of"));
+  EXPECT_THAT(error_of(overlapping + "adhere_cells nogroup 2"),
+              HasSubstr("group nogroup does not exist"));
   Tissue apart;
   apart.cells = {square(10.0, 10.0, 1.0), square(15.0, 10.0, 1.0)};
-  EXPECT_NE(error_of(contact_commands(write_tissue(apart, "apart.data")) + "adhere_cells all 2")
-                .find("no vertices of different cells overlap"),
-            std::string::npos);
+  EXPECT_THAT(error_of(contact_commands(write_tissue(apart, "apart.data")) + "adhere_cells all 2"),
+              HasSubstr("no vertices of different cells overlap"));
   std::string tight = overlapping;
   tight.replace(tight.find("extra/bond/per/atom 6"), 21, "extra/bond/per/atom 0");
-  EXPECT_NE(error_of(tight + "adhere_cells all 2").find("add 'extra/bond/per/atom"),
-            std::string::npos);
+  EXPECT_THAT(error_of(tight + "adhere_cells all 2"), HasSubstr("add 'extra/bond/per/atom"));
 }
 
 TEST_F(BadContacts, OverlapsMustNotHideBehindSpecialBonds)
 {
   const std::string msg = error_of(contact_commands(data_file("overlapping.data")) +
                                    "special_bonds lj 0.0 1.0 1.0\nrun 0 post no");
-  EXPECT_NE(msg.find("needs special_bonds lj 1.0 1.0 1.0 (1-2 weight is 0)"), std::string::npos)
-      << msg;
+  EXPECT_THAT(msg, HasSubstr("needs special_bonds lj 1.0 1.0 1.0 (1-2 weight is 0)"));
 }
 
 TEST_F(BadContacts, BreakingNeedsTheAdhesionStyle)
@@ -405,5 +401,5 @@ TEST_F(BadContacts, BreakingNeedsTheAdhesionStyle)
                " fix Vertices NULL Vertices\n"
                "bond_coeff * 1\nangle_coeff * 1\nfix cells all dpoly/cells\n"
                "fix b all mesophyll/break 7\nrun 0 post no");
-  EXPECT_NE(msg.find("needs bond_style mesophyll/adhesion"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("needs bond_style mesophyll/adhesion"));
 }

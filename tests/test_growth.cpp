@@ -3,9 +3,12 @@
 // theta0_min, and both calA_max rules. Runs on any number of ranks.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <memory>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -198,28 +201,26 @@ class BadGrowth : public ::testing::Test {
 
 TEST_F(BadGrowth, RefusesNonsense)
 {
-  EXPECT_NE(
-      error_of("fix g all mesophyll/grow delta_a -0.5").find("delta_a must be >= 0, got -0.5"),
-      std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow lambda -1").find("lambda must be >= 0, got -1"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow c_B -4").find("c_B must be >= 0, got -4"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow c_L 1.5").find("c_L must be in [0, 1], got 1.5"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow c_L -0.1").find("c_L must be >= 0, got -0.1"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow rules mine").find("rules must be 'code' or 'paper'"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow speed 2").find("keyword: speed"), std::string::npos);
-  EXPECT_NE(error_of("fix g all mesophyll/grow box open").find("box must be 'relax' or 'fixed'"),
-            std::string::npos);
+  EXPECT_THAT(error_of("fix g all mesophyll/grow delta_a -0.5"),
+              HasSubstr("delta_a must be >= 0, got -0.5"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow lambda -1"),
+              HasSubstr("lambda must be >= 0, got -1"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow c_B -4"), HasSubstr("c_B must be >= 0, got -4"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow c_L 1.5"),
+              HasSubstr("c_L must be in [0, 1], got 1.5"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow c_L -0.1"),
+              HasSubstr("c_L must be >= 0, got -0.1"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow rules mine"),
+              HasSubstr("rules must be 'code' or 'paper'"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow speed 2"), HasSubstr("keyword: speed"));
+  EXPECT_THAT(error_of("fix g all mesophyll/grow box open"),
+              HasSubstr("box must be 'relax' or 'fixed'"));
 }
 
 TEST_F(BadGrowth, NeedsBoxRelaxUnlessToldTheBoxIsFixed)
 {
   const std::string msg = error_of("fix g all mesophyll/grow");
-  EXPECT_NE(msg.find("needs fix box/relax"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("needs fix box/relax"));
   EXPECT_EQ(error_of("fix g all mesophyll/grow box fixed"), "");
 }
 
@@ -230,5 +231,5 @@ TEST_F(BadGrowth, NeedsTheCells)
   cmds.replace(cmds.find("fix cells all dpoly/cells eps_a 1.0\n"), 36, "");
   cmds.replace(cmds.find(" f_cells"), 8, "");
   const std::string msg = s.try_run(cmds + "fix g all mesophyll/grow\nrun 0 post no");
-  EXPECT_NE(msg.find("needs fix dpoly/cells"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("needs fix dpoly/cells"));
 }

@@ -1,10 +1,13 @@
 // The parameter sets of potentials/ and the command that reads them, mesophyll_parameters.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <cstdlib>
 #include <fstream>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -105,17 +108,16 @@ class BadParameters : public ::testing::Test {
 
 TEST_F(BadParameters, SaysWhatIsWrong)
 {
-  EXPECT_NE(error_of("lj", shipped_sets()).find("needs a file and a set name"), std::string::npos);
-  EXPECT_NE(error_of("lj", shipped_sets() + " nosuchset").find("no set 'nosuchset'"),
-            std::string::npos);
+  EXPECT_THAT(error_of("lj", shipped_sets()), HasSubstr("needs a file and a set name"));
+  EXPECT_THAT(error_of("lj", shipped_sets() + " nosuchset"), HasSubstr("no set 'nosuchset'"));
   const std::string unknown = sets_file("unknown.mesophyll", "lj", "s eps_b 0.1 gamma 3\n");
-  EXPECT_NE(error_of("lj", unknown + " s").find("unknown parameter 'gamma'"), std::string::npos);
+  EXPECT_THAT(error_of("lj", unknown + " s"), HasSubstr("unknown parameter 'gamma'"));
   const std::string text = sets_file("text.mesophyll", "lj", "s eps_b soft\n");
-  EXPECT_NE(error_of("lj", text + " s").find("eps_b = 'soft'"), std::string::npos);
+  EXPECT_THAT(error_of("lj", text + " s"), HasSubstr("eps_b = 'soft'"));
   const std::string twice = sets_file("twice.mesophyll", "lj", "s beta 1\ns beta 2\n");
-  EXPECT_NE(error_of("lj", twice + " s").find("beta given twice"), std::string::npos);
+  EXPECT_THAT(error_of("lj", twice + " s"), HasSubstr("beta given twice"));
   const std::string dangling = sets_file("dangling.mesophyll", "lj", "s beta\n");
-  EXPECT_NE(error_of("lj", dangling + " s").find("has no value"), std::string::npos);
+  EXPECT_THAT(error_of("lj", dangling + " s"), HasSubstr("has no value"));
   const std::string msg = error_of("real", shipped_sets() + " default");
-  EXPECT_NE(msg.find("units"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("units"));
 }

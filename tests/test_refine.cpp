@@ -2,10 +2,13 @@
 // the topology stays a set of closed rings, and the result does not depend on the ranks.
 #include "test_helpers.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <map>
 #include <memory>
+
+using ::testing::HasSubstr;
 
 using namespace test;
 
@@ -220,16 +223,15 @@ TEST_F(BadRefine, SaysWhatIsWrong)
     return s.try_run(contact_commands(data_file("single_contacts.data")) + fix_line +
                      "\nrun 0 post no");
   };
-  EXPECT_NE(error_of("fix r all dpoly/refine length 1").find("length must be >= 2 vertex radii"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix r all dpoly/refine cap 0.5").find("cap must be >= 1, got 0.5"),
-            std::string::npos);
-  EXPECT_NE(error_of("fix r all dpoly/refine depth 2").find("keyword: depth"), std::string::npos);
-  EXPECT_NE(error_of("fix r all dpoly/refine cap").find("fix dpoly/refine cap"), std::string::npos);
+  EXPECT_THAT(error_of("fix r all dpoly/refine length 1"),
+              HasSubstr("length must be >= 2 vertex radii"));
+  EXPECT_THAT(error_of("fix r all dpoly/refine cap 0.5"), HasSubstr("cap must be >= 1, got 0.5"));
+  EXPECT_THAT(error_of("fix r all dpoly/refine depth 2"), HasSubstr("keyword: depth"));
+  EXPECT_THAT(error_of("fix r all dpoly/refine cap"), HasSubstr("fix dpoly/refine cap"));
   LammpsSession s;
   std::string cmds = contact_commands(data_file("single_contacts.data"));
   cmds.replace(cmds.find("fix cells all dpoly/cells eps_a 1.0\n"), 36, "");
   cmds.replace(cmds.find(" f_cells"), 8, "");
   const std::string msg = s.try_run(cmds + "fix r all dpoly/refine\nrun 0 post no");
-  EXPECT_NE(msg.find("needs fix dpoly/cells"), std::string::npos) << msg;
+  EXPECT_THAT(msg, HasSubstr("needs fix dpoly/cells"));
 }
