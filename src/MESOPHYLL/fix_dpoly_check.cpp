@@ -27,7 +27,7 @@
 using namespace LAMMPS_NS;
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, CHECK), target_pressure(0.0), pressure_tolerance(1.0e-6),
+    FixDPolyStage(lmp, narg, arg, CHECK, 7), target_pressure(0.0), pressure_tolerance(1.0e-6),
     stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
 {
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -50,10 +50,6 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
       return false;
     return true;
   });
-  vector_flag = 1;
-  size_vector = 7;
-  extvector = 0;
-  global_freq = 1;
   restart_global = 0;    // a check keeps nothing across runs
 }
 

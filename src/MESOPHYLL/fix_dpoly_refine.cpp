@@ -37,7 +37,7 @@ double half_preferred_length(double l, double l0)
 }    // namespace
 
 FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, REFINE), radii(3.0), cap(5.0), void_only(1), steps(0),
+    FixDPolyStage(lmp, narg, arg, REFINE, 3), radii(3.0), cap(5.0), void_only(1), steps(0),
     added_total(0), added_last(0)
 {
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -57,11 +57,6 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
   });
   if (!atom->molecule_flag || !atom->avec->bonds_allow || !atom->avec->angles_allow)
     error->all(FLERR, "Fix dpoly/refine needs an atom style with molecule IDs, bonds and angles");
-
-  vector_flag = 1;
-  size_vector = 3;    // vertices added at the last refinement, in all, refinements
-  extvector = 0;
-  global_freq = 1;
 }
 
 void FixDPolyRefine::init()
@@ -361,6 +356,7 @@ void FixDPolyRefine::rewire_topology(const std::vector<Split> &splits)
     }
 }
 
+// vertices added at the last refinement, in all, refinements
 double FixDPolyRefine::compute_vector(int n)
 {
   if (n == 0) return added_last;

@@ -18,10 +18,14 @@ namespace {
 constexpr int RESTART_VERSION = 1;
 }    // namespace
 
-FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage) :
+FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage, int vector_length) :
     Fix(lmp, narg, arg), cells(nullptr), after_runs(0), my_stage(stage)
 {
   restart_global = 1;
+  vector_flag = 1;
+  size_vector = vector_length;
+  extvector = 0;
+  global_freq = 1;
 }
 
 // the hub may be defined after this fix, so it attaches itself later in the same init()

@@ -18,14 +18,15 @@ namespace LAMMPS_NS {
 // in act(); fix dpoly/cells calls the defined stages after every minimization in the protocol's
 // fixed order (the order of the stages below, whatever the order of the fix commands), and after
 // an MD run only those given 'runs yes'. The base class holds what every stage shares: the hub,
-// the 'runs' keyword, and versioned, size-checked global restart data.
+// the 'runs' keyword, its global vector, and versioned, size-checked global restart data.
 class FixDPolyStage : public Fix {
  public:
   enum Stage { CHECK, BREAK, GROW, REFINE };
   // what act() changed, so that the hub can bring LAMMPS's topology and its cells up to date
   enum Change { NOTHING = 0, BONDS = 1, RINGS = 2 };
 
-  FixDPolyStage(class LAMMPS *, int, char **, Stage);
+  // every stage reports what it did as a global, intensive vector of this many values
+  FixDPolyStage(class LAMMPS *, int, char **, Stage, int vector_length);
   int setmask() override { return 0; }    // acts only when fix dpoly/cells calls it
   void init() override;
   void write_restart(FILE *) override;

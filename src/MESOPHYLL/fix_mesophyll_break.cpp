@@ -22,7 +22,7 @@ using namespace LAMMPS_NS;
 using DPoly::AdhesiveBond;
 
 FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, BREAK), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1),
+    FixDPolyStage(lmp, narg, arg, BREAK, 5), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1),
     break_step(0), broken_total(0), broken_threshold(0), broken_stochastic(0), bonds_left(0),
     local_rows(nullptr), adhesion(nullptr)
 {
@@ -46,10 +46,6 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
     return true;
   });
 
-  vector_flag = 1;
-  size_vector = 5;
-  extvector = 0;
-  global_freq = 1;
   local_flag = 1;
   size_local_cols = 5;
   local_freq = 1;

@@ -25,10 +25,10 @@
 using namespace LAMMPS_NS;
 
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, GROW), delta_a(0.5), lambda(5.0), c_length(0.5), c_bending(4.0),
-    theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1), scale_diameters(1),
-    need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0), packing_last(-1.0),
-    compaction(0.0)
+    FixDPolyStage(lmp, narg, arg, GROW, 5), delta_a(0.5), lambda(5.0), c_length(0.5),
+    c_bending(4.0), theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1),
+    scale_diameters(1), need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0),
+    packing_last(-1.0), compaction(0.0)
 {
   bool shape_max_given = false;
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -76,13 +76,6 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
       return false;
     return true;
   });
-
-  vector_flag = 1;
-  // growth steps, void-facing vertices, cells at or above calA_max, phi at the last minimum,
-  // cumulative compaction delta_phi_plus
-  size_vector = 5;
-  extvector = 0;
-  global_freq = 1;
 }
 
 void FixMesophyllGrow::init()
@@ -223,6 +216,8 @@ void FixMesophyllGrow::record_packing()
   packing_last = packing;
 }
 
+// growth steps, void-facing vertices, cells at or above calA_max, phi at the last minimum,
+// cumulative compaction delta_phi_plus
 double FixMesophyllGrow::compute_vector(int n)
 {
   const double values[] = {(double) steps, (double) void_vertices, (double) cells_above_max,
