@@ -14,6 +14,7 @@ BondStyle(mesophyll/adhesion,BondMesophyllAdhesion);
 
 #include "bond.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_ring.h"
 
 #include <vector>
 
@@ -38,6 +39,7 @@ class BondMesophyllAdhesion : public Bond {
   void read_restart_settings(FILE *) override;
   void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
+  void born_matrix(int, double, int, int, double &, double &) override;
   void *extract(const char *, int &) override;
 
   // Collective: every adhesive bond of the system with its current stretch, sorted by IDs.
@@ -50,6 +52,7 @@ class BondMesophyllAdhesion : public Bond {
   double *contact_stiffness;    // eps_c per bond type
   DPoly::ContactRule rule;
   class FixDPolyCells *cells;
+  DPoly::VertexStateCache vertex_state;
   void allocate();
   double contact_number(int i, int j);
 };
