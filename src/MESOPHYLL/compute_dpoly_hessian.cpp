@@ -73,10 +73,7 @@ Bond *bond_style_of(Force *force, int type)
 // rule) is here: the derivatives of each term in its coordinate come from its style.
 class Assembly {
  public:
-  Assembly(int nvertices, const Domain *domain) :
-      H(Eigen::MatrixXd::Zero(2 * nvertices, 2 * nvertices)), domain(domain)
-  {
-  }
+  explicit Assembly(int nvertices) : H(Eigen::MatrixXd::Zero(2 * nvertices, 2 * nvertices)) {}
   Eigen::MatrixXd H;
 
   // U(r) on the distance r = |d| between vertices i and j, U' = first, U'' = second: the 2x2
@@ -163,9 +160,6 @@ class Assembly {
       H(2 * j, 2 * i + 1) -= 0.5 * law.first;
     }
   }
-
- private:
-  const Domain *domain;
 };
 
 // Vertex positions by atom ID, the same on every rank, and minimum-image differences of them:
@@ -412,7 +406,7 @@ std::vector<double> ComputeDPolyHessian::assemble()
   std::vector<double> result;
   if (comm->me == 0) {
     const std::vector<VertexRecord> &vertices = positions.vertices;
-    Assembly h((int) vertices.size(), domain);
+    Assembly h((int) vertices.size());
 
     // area term of every cell, positions unwrapped along its ring
     for (int c = 0; c < cells->ncells(); c++) {
