@@ -85,6 +85,9 @@ class LammpsSession {
 
   int natoms() { return (int) lammps_get_natoms(handle); }
 
+  // The LAMMPS instance itself (a LAMMPS_NS::LAMMPS *), for tests of a style's own methods.
+  void *lammps_handle() { return handle; }
+
   // Per-atom values ordered by atom ID, on every rank.
   std::vector<double> gather(const char *name, int count)
   {

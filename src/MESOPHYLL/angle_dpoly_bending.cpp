@@ -23,7 +23,7 @@ using namespace LAMMPS_NS;
 AngleDPolyBending::AngleDPolyBending(LAMMPS *lmp) :
     Angle(lmp), stiffness(nullptr), mean_interior_angle(MathConst::MY_PI)
 {
-  born_matrix_enable = 0;
+  born_matrix_enable = 1;
 }
 
 AngleDPolyBending::~AngleDPolyBending()
@@ -47,7 +47,8 @@ void AngleDPolyBending::init_style()
 {
   if (domain->dimension != 2)
     error->all(FLERR, "Angle style dpoly/bending needs a 2d simulation (dimension 2)");
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
+  vertex_state.find(atom, error, "Angle style dpoly/bending");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Angle style dpoly/bending");
   double local[2] = {0.0, (double) atom->nlocal}, global[2];
   for (int i = 0; i < atom->nlocal; i++) local[0] += state.preferred_angle[i];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
@@ -63,7 +64,7 @@ void AngleDPolyBending::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Angle style dpoly/bending");
   double **x = atom->x;
   double **f = atom->f;
   int **anglelist = neighbor->anglelist;
@@ -86,9 +87,10 @@ void AngleDPolyBending::compute(int eflag, int vflag)
       error->one(FLERR, "Angle style dpoly/bending: vertex {} coincides with a ring neighbour",
                  atom->tag[i2]);
 
-    const double dtheta = DPoly::turning_angle(d1, d2) - state.preferred_angle[i2];
-    const double torque = stiffness[type] * dtheta;
-    if (eflag) eangle = 0.5 * torque * dtheta;
+    const DPoly::Law law = DPoly::bending_law(stiffness[type], DPoly::turning_angle(d1, d2),
+                                              state.preferred_angle[i2]);
+    const double torque = law.first;
+    if (eflag) eangle = law.energy;
 
     double f1[3] = {torque * d1[1] / rsq1, -torque * d1[0] / rsq1, 0.0};
     double f3[3] = {torque * d2[1] / rsq2, -torque * d2[0] / rsq2, 0.0};
@@ -156,14 +158,41 @@ void AngleDPolyBending::write_data(FILE *fp)
 
 double AngleDPolyBending::single(int type, int i1, int i2, int i3)
 {
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Angle style dpoly/bending");
   double **x = atom->x;
   i1 = domain->closest_image(i2, i1);
   i3 = domain->closest_image(i2, i3);
   const double d1[2] = {x[i2][0] - x[i1][0], x[i2][1] - x[i1][1]};
   const double d2[2] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1]};
-  const double dtheta = DPoly::turning_angle(d1, d2) - state.preferred_angle[i2];
-  return 0.5 * stiffness[type] * dtheta * dtheta;
+  return turning_law(type, i2, DPoly::turning_angle(d1, d2)).energy;
+}
+
+DPoly::Law AngleDPolyBending::turning_law(int type, int centre, double theta)
+{
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Angle style dpoly/bending");
+  return DPoly::bending_law(stiffness[type], theta, state.preferred_angle[centre]);
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS's convention: du = dU/dc, du2 = d2U/dc^2 in c = cos of the interior angle between
+   x1 - x2 and x3 - x2. Here c = -cos(theta), so dtheta/dc = 1/sin(theta) and
+     du = U'/sin(theta),  du2 = (U'' sin(theta) - U' cos(theta)) / sin(theta)^3.
+   U is not a function of c where sin(theta) = 0 (theta and -theta have the same c): at straight
+   or folded vertices these diverge (inf or nan at exactly 0 or pi), as angle_style harmonic's
+   do at its own singular angles.
+------------------------------------------------------------------------- */
+
+void AngleDPolyBending::born_matrix(int type, int i1, int i2, int i3, double &du, double &du2)
+{
+  double **x = atom->x;
+  i1 = domain->closest_image(i2, i1);
+  i3 = domain->closest_image(i2, i3);
+  const double d1[2] = {x[i2][0] - x[i1][0], x[i2][1] - x[i1][1]};
+  const double d2[2] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1]};
+  const double theta = DPoly::turning_angle(d1, d2);
+  const DPoly::Law law = turning_law(type, i2, theta);
+  const double sine = sin(theta), cosine = cos(theta);
+  du = law.first / sine;
+  du2 = (law.second * sine - law.first * cosine) / (sine * sine * sine);
 }
 
 void *AngleDPolyBending::extract(const char *str, int &dim)

@@ -13,6 +13,8 @@ AngleStyle(dpoly/bending,AngleDPolyBending);
 #define LMP_ANGLE_DPOLY_BENDING_H
 
 #include "angle.h"
+#include "dpoly_laws.h"
+#include "dpoly_ring.h"
 
 namespace LAMMPS_NS {
 
@@ -30,11 +32,17 @@ class AngleDPolyBending : public Angle {
   void read_restart(FILE *) override;
   void write_data(FILE *) override;
   double single(int, int, int, int) override;
+  void born_matrix(int, int, int, int, double &, double &) override;
+
+  // The bending law in the signed turning angle theta at the local vertex 'centre': U,
+  // dU/dtheta and d2U/dtheta2, regular everywhere (born_matrix() is not at straight vertices).
+  DPoly::Law turning_law(int type, int centre, double theta);
   void *extract(const char *, int &) override;
 
  protected:
   double *stiffness;             // eps_b per angle type
   double mean_interior_angle;    // pi - <theta0> when the run started, for equilibrium_angle()
+  DPoly::VertexStateCache vertex_state;
   void allocate();
 };
 

@@ -9,6 +9,7 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "force.h"
@@ -24,7 +25,7 @@ using namespace LAMMPS_NS;
 BondDPolySegment::BondDPolySegment(LAMMPS *lmp) :
     Bond(lmp), stiffness(nullptr), longest_preferred(0.0)
 {
-  born_matrix_enable = 0;
+  born_matrix_enable = 1;
 }
 
 BondDPolySegment::~BondDPolySegment()
@@ -50,7 +51,8 @@ void BondDPolySegment::init_style()
     error->all(FLERR, "Bond style dpoly/segment needs a 2d simulation (dimension 2)");
   if (!atom->avec->angles_allow)
     error->all(FLERR, "Bond style dpoly/segment needs angles: they give each ring its order");
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
+  vertex_state.find(atom, error, "Bond style dpoly/segment");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
   double longest = 0.0;
   for (int i = 0; i < atom->nlocal; i++) longest = std::max(longest, state.preferred_length[i]);
   MPI_Allreduce(&longest, &longest_preferred, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -76,14 +78,14 @@ double BondDPolySegment::preferred_length(const DPoly::VertexState &state, int i
 }
 
 /* ----------------------------------------------------------------------
-   U = (eps_l/2)(r/l0 - 1)^2, so F = -dU/dr = -eps_l (r/l0 - 1)/l0 along the bond
+   U = (eps_l/2)(r/l0 - 1)^2 (DPoly::segment_law), F = -dU/dr along the bond
 ------------------------------------------------------------------------- */
 
 void BondDPolySegment::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
   double **x = atom->x;
   double **f = atom->f;
   int **bondlist = neighbor->bondlist;
@@ -107,9 +109,9 @@ void BondDPolySegment::compute(int eflag, int vflag)
       error->one(FLERR, "Bond style dpoly/segment: vertices {} and {} coincide", atom->tag[i1],
                  atom->tag[i2]);
 
-    const double strain = r / l0 - 1.0;
-    const double fbond = -stiffness[type] * strain / (l0 * r);
-    if (eflag) ebond = 0.5 * stiffness[type] * strain * strain;
+    const DPoly::DistanceLaw law = DPoly::segment_law(stiffness[type], r, l0);
+    const double fbond = law.fpair;
+    if (eflag) ebond = law.energy;
 
     if (newton_bond || i1 < nlocal) {
       f[i1][0] += delx * fbond;
@@ -169,12 +171,22 @@ void BondDPolySegment::write_data(FILE *fp)
 
 double BondDPolySegment::single(int type, double rsq, int i, int j, double &fforce)
 {
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Bond style dpoly/segment");
-  const double l0 = preferred_length(state, i, j);
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
   const double r = sqrt(rsq);
-  const double strain = r / l0 - 1.0;
-  fforce = (r > 0.0) ? -stiffness[type] * strain / (l0 * r) : 0.0;
-  return 0.5 * stiffness[type] * strain * strain;
+  const DPoly::DistanceLaw law =
+      DPoly::segment_law(stiffness[type], r, preferred_length(state, i, j));
+  fforce = (r > 0.0) ? law.fpair : 0.0;
+  return law.energy;
+}
+
+// du = dU/dr, du2 = d2U/dr2, as in LAMMPS's other bond styles
+void BondDPolySegment::born_matrix(int type, double rsq, int i, int j, double &du, double &du2)
+{
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
+  const DPoly::DistanceLaw law =
+      DPoly::segment_law(stiffness[type], sqrt(rsq), preferred_length(state, i, j));
+  du = law.first;
+  du2 = law.second;
 }
 
 void *BondDPolySegment::extract(const char *str, int &dim)

@@ -31,11 +31,13 @@ class BondDPolySegment : public Bond {
   void read_restart(FILE *) override;
   void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
+  void born_matrix(int, double, int, int, double &, double &) override;
   void *extract(const char *, int &) override;
 
  protected:
   double *stiffness;           // eps_l per bond type
   double longest_preferred;    // largest l0 when the run started, for equilibrium_distance()
+  DPoly::VertexStateCache vertex_state;
   void allocate();
   double preferred_length(const DPoly::VertexState &state, int i, int j);
 };

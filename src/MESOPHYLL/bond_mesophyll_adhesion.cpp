@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_gather.h"
+#include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -28,7 +29,7 @@ using DPoly::AdhesiveBond;
 BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
     Bond(lmp), contact_stiffness(nullptr), rule(ContactRule::BONDS)
 {
-  born_matrix_enable = 0;
+  born_matrix_enable = 1;
 }
 
 BondMesophyllAdhesion::~BondMesophyllAdhesion()
@@ -80,7 +81,7 @@ BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const char *who)
 void BondMesophyllAdhesion::init_style()
 {
   FixDPolyCells::find(lmp, "Bond style mesophyll/adhesion");
-  DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  vertex_state.find(atom, error, "Bond style mesophyll/adhesion");
 }
 
 double BondMesophyllAdhesion::contact_number(const DPoly::AdhesionCounts &from, tagint cell1,
@@ -103,15 +104,14 @@ void BondMesophyllAdhesion::recount()
 }
 
 /* ----------------------------------------------------------------------
-   U = eps_c/(2 z) (1 - r/s)^2 for r > s: F = -dU/dr = -(eps_c/z)(r/s - 1)/s, attractive
+   U = eps_c/(2 z) (1 - r/s)^2 for r > s (DPoly::adhesion_law): F = -dU/dr, attractive
 ------------------------------------------------------------------------- */
 
 void BondMesophyllAdhesion::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state =
-      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
   double **x = atom->x;
   double **f = atom->f;
   tagint *molecule = atom->molecule;
@@ -137,10 +137,10 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
     const double s = 0.5 * (state.diameter[i1] + state.diameter[i2]);
     if (r <= s) continue;    // overlap belongs to the pair style
 
-    const double scaled = contact_stiffness[type] / contact_number(i1, i2);
-    const double stretch = r / s - 1.0;
-    const double fbond = -scaled * stretch / (s * r);
-    const double ebond = eflag ? 0.5 * scaled * stretch * stretch : 0.0;
+    const DPoly::DistanceLaw law =
+        DPoly::adhesion_law(contact_stiffness[type], contact_number(i1, i2), r, s);
+    const double fbond = law.fpair;
+    const double ebond = eflag ? law.energy : 0.0;
 
     if (newton_bond || i1 < nlocal) {
       f[i1][0] += delx * fbond;
@@ -292,16 +292,30 @@ void BondMesophyllAdhesion::write_data(FILE *fp)
 
 double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double &fforce)
 {
-  const DPoly::VertexState state =
-      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
   const double r = sqrt(rsq);
   const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
   fforce = 0.0;
   if (r <= s) return 0.0;
-  const double scaled = contact_stiffness[type] / contact_number(i, j);
-  const double stretch = r / s - 1.0;
-  fforce = -scaled * stretch / (s * r);
-  return 0.5 * scaled * stretch * stretch;
+  const DPoly::DistanceLaw law =
+      DPoly::adhesion_law(contact_stiffness[type], contact_number(i, j), r, s);
+  fforce = law.fpair;
+  return law.energy;
+}
+
+// du = dU/dr, du2 = d2U/dr2 with this bond's contact number; both 0 up to contact, where the
+// second derivative jumps from 0 to eps_c/(z s^2)
+void BondMesophyllAdhesion::born_matrix(int type, double rsq, int i, int j, double &du, double &du2)
+{
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
+  const double r = sqrt(rsq);
+  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  du = du2 = 0.0;
+  if (r <= s) return;
+  const DPoly::DistanceLaw law =
+      DPoly::adhesion_law(contact_stiffness[type], contact_number(i, j), r, s);
+  du = law.first;
+  du2 = law.second;
 }
 
 void *BondMesophyllAdhesion::extract(const char *str, int &dim)

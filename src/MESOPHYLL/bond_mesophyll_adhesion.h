@@ -14,6 +14,7 @@ BondStyle(mesophyll/adhesion,BondMesophyllAdhesion);
 
 #include "bond.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_ring.h"
 
 #include <vector>
 
@@ -40,6 +41,7 @@ class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
   void read_restart_settings(FILE *) override;
   void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
+  void born_matrix(int, double, int, int, double &, double &) override;
   void *extract(const char *, int &) override;
 
   // The style of this LAMMPS instance (alone or in hybrid); an error names 'who' if none.
@@ -67,6 +69,7 @@ class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
   double *contact_stiffness;    // eps_c per bond type
   ContactRule rule;
   DPoly::AdhesionCounts contacts;
+  DPoly::VertexStateCache vertex_state;
   void allocate();
   double contact_number(int i, int j);
 };

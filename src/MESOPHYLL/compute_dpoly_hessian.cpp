@@ -5,13 +5,14 @@
 
 #include "compute_dpoly_hessian.h"
 
-#include "angle.h"
+#include "angle_dpoly_bending.h"
 #include "atom.h"
 #include "bond.h"
-#include "bond_mesophyll_adhesion.h"
+#include "bond_hybrid.h"
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_gather.h"
+#include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -25,7 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <map>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -35,41 +36,52 @@ namespace {
 
 // What the Hessian needs of a vertex.
 struct VertexRecord {
-  tagint tag, cell;
-  int type, angle_type;
-  double x[2], sigma, l0, theta0, a0;
+  tagint tag;
+  double x[2], a0;
 };
-// A non-adhesive bond (a ring segment), as held by its owner.
-struct SegmentRecord {
+// A term in the distance between vertices a < b (a bond, a contact): dU/dr and d2U/dr2, from its
+// style's born_matrix().
+struct DistanceRecord {
   tagint a, b;
-  int type;
+  double first, second;
+  bool operator<(const DistanceRecord &o) const
+  {
+    return std::tie(a, b, first, second) < std::tie(o.a, o.b, o.first, o.second);
+  }
+};
+// A bending term at vertex c, from p to n: dU/dtheta and d2U/dtheta2 of the turning angle.
+struct BendingRecord {
+  tagint p, c, n;
+  double first, second;
+  bool operator<(const BendingRecord &o) const { return c < o.c; }
 };
 
-// Dense Hessian of sums of terms, in 2D, rows 2*index + (0: x, 1: y).
+// The style of a bond type: bond_style hybrid has no born_matrix() of its own to dispatch with,
+// so find the sub-style that holds the type's coefficients.
+Bond *bond_style_of(Force *force, int type)
+{
+  auto *hybrid = dynamic_cast<BondHybrid *>(force->bond);
+  if (!hybrid) return force->bond;
+  for (int m = 0; m < hybrid->nstyles; m++) {
+    Bond *style = hybrid->styles[m];
+    if (style && style->allocated && style->setflag[type]) return style;
+  }
+  return nullptr;
+}
+
+// Dense Hessian of sums of terms, in 2D, rows 2*index + (0: x, 1: y). Only the geometry (chain
+// rule) is here: the derivatives of each term in its coordinate come from its style.
 class Assembly {
  public:
-  Assembly(int nvertices, const Domain *domain) :
-      H(Eigen::MatrixXd::Zero(2 * nvertices, 2 * nvertices)), domain(domain)
-  {
-  }
+  explicit Assembly(int nvertices) : H(Eigen::MatrixXd::Zero(2 * nvertices, 2 * nvertices)) {}
   Eigen::MatrixXd H;
 
-  // minimum-image difference b - a
-  void difference(const double *a, const double *b, double *d) const
-  {
-    double delta[3] = {b[0] - a[0], b[1] - a[1], 0.0};
-    domain->minimum_image(FLERR, delta);
-    d[0] = delta[0];
-    d[1] = delta[1];
-  }
-
-  // U = (k/2)(r/L - 1)^2 on the distance r = |d| between vertices i and j (segments, contacts,
-  // adhesion): the 2x2 block U'' u u^T + (U'/r)(I - u u^T) enters with + on ii, jj, - on ij.
-  void add_distance_term(int i, int j, const double *d, double k, double L)
+  // U(r) on the distance r = |d| between vertices i and j, U' = first, U'' = second: the 2x2
+  // block U'' u u^T + (U'/r)(I - u u^T) enters with + on ii, jj, - on ij.
+  void add_distance_term(int i, int j, const double *d, double first, double second)
   {
     const double r = std::hypot(d[0], d[1]);
     const double u[2] = {d[0] / r, d[1] / r};
-    const double first = k / L * (r / L - 1.0), second = k / (L * L);
     for (int a = 0; a < 2; a++)
       for (int b = 0; b < 2; b++) {
         const double uu = u[a] * u[b];
@@ -81,11 +93,11 @@ class Assembly {
       }
   }
 
-  // U = (k/2)(theta - theta0)^2, theta the turning angle at vertex c from d1 = c - p to
-  // d2 = n - c: theta = phi(d2) - phi(d1), phi the polar angle; H = k (g g^T + (theta-theta0) T)
-  void add_bending(int p, int c, int n, const double *d1, const double *d2, double k, double theta0)
+  // U(theta), theta the turning angle at vertex c from d1 = c - p to d2 = n - c:
+  // theta = phi(d2) - phi(d1), phi the polar angle; H = U'' g g^T + U' Hess(theta)
+  void add_bending(int p, int c, int n, const double *d1, const double *d2, double first,
+                   double second)
   {
-    const double theta = DPoly::turning_angle(d1, d2);
     const double r1 = d1[0] * d1[0] + d1[1] * d1[1], r2 = d2[0] * d2[0] + d2[1] * d2[1];
     const double q1[2] = {-d1[1] / r1, d1[0] / r1}, q2[2] = {-d2[1] / r2, d2[0] / r2};
     const int index[3] = {p, c, n};
@@ -115,13 +127,13 @@ class Assembly {
         for (int a = 0; a < 2; a++)
           for (int b = 0; b < 2; b++)
             H(2 * index[s] + a, 2 * index[t] + b) +=
-                k * (g[2 * s + a] * g[2 * t + b] + (theta - theta0) * block(s, t, a, b));
+                second * (g[2 * s + a] * g[2 * t + b]) + first * block(s, t, a, b);
   }
 
-  // U = (k/2)(a/a0 - 1)^2 with a = (1/2) sum (X_m Y_m+1 - X_m+1 Y_m) over the ring, positions
-  // unwrapped along it: H = (k/a0^2) g g^T + (k/a0)(a/a0 - 1) Hess(a).
+  // The area law of the hub in a = (1/2) sum (X_m Y_m+1 - X_m+1 Y_m) over the ring, positions
+  // unwrapped along it: H = U'' g g^T + U' Hess(a).
   void add_area(const std::vector<int> &ring, const std::vector<std::array<double, 2>> &pos,
-                double k, double a0)
+                double eps_a, double a0)
   {
     const int n = (int) ring.size();
     double area = 0.0;
@@ -135,18 +147,48 @@ class Assembly {
       g[2 * m] = 0.5 * (next[1] - prev[1]);
       g[2 * m + 1] = 0.5 * (prev[0] - next[0]);
     }
-    const double outer = k / (a0 * a0), slope = k / a0 * (area / a0 - 1.0);
+    const DPoly::Law law = DPoly::area_law(eps_a, area, a0);
     for (int s = 0; s < 2 * n; s++)
       for (int t = 0; t < 2 * n; t++)
-        H(2 * ring[s / 2] + s % 2, 2 * ring[t / 2] + t % 2) += outer * g[s] * g[t];
+        H(2 * ring[s / 2] + s % 2, 2 * ring[t / 2] + t % 2) += law.second * (g[s] * g[t]);
     for (int m = 0; m < n; m++) {
       const int i = ring[m], j = ring[(m + 1) % n];
       // d2a/dX_m dY_m+1 = +1/2, d2a/dY_m dX_m+1 = -1/2
-      H(2 * i, 2 * j + 1) += 0.5 * slope;
-      H(2 * j + 1, 2 * i) += 0.5 * slope;
-      H(2 * i + 1, 2 * j) -= 0.5 * slope;
-      H(2 * j, 2 * i + 1) -= 0.5 * slope;
+      H(2 * i, 2 * j + 1) += 0.5 * law.first;
+      H(2 * j + 1, 2 * i) += 0.5 * law.first;
+      H(2 * i + 1, 2 * j) -= 0.5 * law.first;
+      H(2 * j, 2 * i + 1) -= 0.5 * law.first;
     }
+  }
+};
+
+// Vertex positions by atom ID, the same on every rank, and minimum-image differences of them:
+// every rank measures a term exactly as rank 0 does, whichever images it holds.
+class Positions {
+ public:
+  Positions(std::vector<VertexRecord> all, const Domain *domain) :
+      vertices(std::move(all)), domain(domain)
+  {
+    std::sort(vertices.begin(), vertices.end(), [](const VertexRecord &a, const VertexRecord &b) {
+      return a.tag < b.tag;
+    });
+    for (size_t k = 0; k < vertices.size(); k++) index[vertices[k].tag] = (int) k;
+  }
+  std::vector<VertexRecord> vertices;    // sorted by atom ID
+  std::unordered_map<tagint, int> index;
+
+  int row(tagint tag) const { return index.at(tag); }
+  // minimum-image difference of vertices b - a
+  void difference(tagint a, tagint b, double *d) const
+  {
+    difference(vertices[row(a)].x, vertices[row(b)].x, d);
+  }
+  void difference(const double *a, const double *b, double *d) const
+  {
+    double delta[3] = {b[0] - a[0], b[1] - a[1], 0.0};
+    domain->minimum_image(FLERR, delta);
+    d[0] = delta[0];
+    d[1] = delta[1];
   }
 
  private:
@@ -198,6 +240,7 @@ ComputeDPolyHessian::~ComputeDPolyHessian()
 void ComputeDPolyHessian::init()
 {
   FixDPolyCells::find(lmp, "Compute dpoly/hessian");
+  vertex_state.find(atom, error, "Compute dpoly/hessian");
   if (domain->triclinic) error->all(FLERR, "Compute dpoly/hessian needs an orthogonal box");
 }
 
@@ -265,13 +308,15 @@ void ComputeDPolyHessian::diagonalize()
 }
 
 /* ----------------------------------------------------------------------
-   the Hessian, on rank 0 (empty elsewhere), column-major = row-major as it is symmetric
+   the Hessian, on rank 0 (empty elsewhere), column-major = row-major as it is symmetric.
+   Each rank takes the derivatives of the terms of its owned atoms from their styles, at the
+   distances and angles measured from the gathered positions; rank 0 sorts them and assembles.
 ------------------------------------------------------------------------- */
 
 std::vector<double> ComputeDPolyHessian::assemble()
 {
   FixDPolyCells *cells = FixDPolyCells::find(lmp, "Compute dpoly/hessian");
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Compute dpoly/hessian");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Compute dpoly/hessian");
   const bigint ndof = 2 * atom->natoms;
   if (ndof > max_dof)
     error->all(FLERR,
@@ -279,54 +324,89 @@ std::vector<double> ComputeDPolyHessian::assemble()
                "{:.0f} MB on rank 0)",
                ndof, max_dof, 8.0 * ndof * ndof / 1.0e6);
 
-  // every vertex and every ring segment, on every rank
+  const int nlocal = atom->nlocal;
+  tagint *tag = atom->tag;
   std::vector<VertexRecord> mine;
-  std::vector<SegmentRecord> my_segments;
-  auto *adhesion = dynamic_cast<BondMesophyllAdhesion *>(force->bond_match("mesophyll/adhesion"));
-  for (int i = 0; i < atom->nlocal; i++) {
-    VertexRecord v = {atom->tag[i],
-                      atom->molecule[i],
-                      atom->type[i],
-                      0,
-                      {atom->x[i][0], atom->x[i][1]},
-                      state.diameter[i],
-                      state.preferred_length[i],
-                      state.preferred_angle[i],
-                      state.preferred_area[i]};
-    for (int m = 0; m < atom->num_angle[i]; m++)
-      if (atom->angle_atom2[i][m] == atom->tag[i]) v.angle_type = atom->angle_type[i][m];
-    mine.push_back(v);
+  for (int i = 0; i < nlocal; i++)
+    mine.push_back({tag[i], {atom->x[i][0], atom->x[i][1]}, state.preferred_area[i]});
+  const Positions positions(DPoly::gather_on_all_ranks(std::move(mine), world), domain);
+
+  auto partner_of = [&](tagint partner, tagint self) {
+    const int j = atom->map(partner);
+    if (j < 0)
+      error->one(FLERR,
+                 "Compute dpoly/hessian: atom {}, bonded to {}, is missing on this rank; "
+                 "increase the communication cutoff",
+                 partner, self);
+    return j;
+  };
+
+  // bonds: segments and adhesion, each once (on one end with newton_bond off)
+  std::vector<DistanceRecord> my_distances;
+  for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
-      if (type <= 0 || (adhesion && adhesion->is_adhesive_type(type))) continue;
-      my_segments.push_back({atom->tag[i], atom->bond_atom[i][m], type});
+      const tagint partner = atom->bond_atom[i][m];
+      if (type <= 0 || (!force->newton_bond && partner < tag[i])) continue;
+      Bond *style = bond_style_of(force, type);
+      if (!style || !style->born_matrix_enable)
+        error->one(FLERR,
+                   "Compute dpoly/hessian: the bond style of bond type {} has no born_matrix()",
+                   type);
+      const tagint a = std::min(tag[i], partner), b = std::max(tag[i], partner);
+      double d[2], first, second;
+      positions.difference(a, b, d);
+      style->born_matrix(type, d[0] * d[0] + d[1] * d[1], i, partner_of(partner, tag[i]), first,
+                         second);
+      if (first != 0.0 || second != 0.0) my_distances.push_back({a, b, first, second});
     }
+
+  // contacts: every pair of an owned vertex with a vertex of higher ID that overlaps it
+  auto *contact = force->pair_match("dpoly/contact", 1);
+  if (contact) {
+    if (!contact->born_matrix_enable)
+      error->all(FLERR, "Compute dpoly/hessian: pair style dpoly/contact has no born_matrix()");
+    for (int i = 0; i < nlocal; i++)
+      for (size_t k = positions.row(tag[i]) + 1; k < positions.vertices.size(); k++) {
+        const tagint b = positions.vertices[k].tag;
+        const int j = atom->map(b);
+        if (j < 0) continue;    // beyond the ghost cutoff, so beyond the pair cutoff
+        double d[2], first, second;
+        positions.difference(tag[i], b, d);
+        const double rsq = d[0] * d[0] + d[1] * d[1];
+        if (rsq >= contact->cutsq[atom->type[i]][atom->type[j]]) continue;
+        contact->born_matrix(i, j, atom->type[i], atom->type[j], rsq, 1.0, 1.0, first, second);
+        if (first != 0.0 || second != 0.0) my_distances.push_back({tag[i], b, first, second});
+      }
   }
-  std::vector<VertexRecord> vertices = DPoly::gather_on_all_ranks(std::move(mine), world);
-  std::vector<SegmentRecord> segments = DPoly::gather_on_all_ranks(std::move(my_segments), world);
-  std::vector<DPoly::AdhesiveBond> bonds;
-  if (adhesion) bonds = adhesion->gather_bonds();
+
+  // bending at every owned vertex, in the turning angle (born_matrix()'s cos is singular there)
+  auto *bending = dynamic_cast<AngleDPolyBending *>(force->angle_match("dpoly/bending"));
+  std::vector<BendingRecord> my_bending;
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < atom->num_angle[i]; m++) {
+      const int type = atom->angle_type[i][m];
+      if (type <= 0 || atom->angle_atom2[i][m] != tag[i]) continue;
+      if (!bending || !bending->setflag[type])
+        error->one(FLERR,
+                   "Compute dpoly/hessian: angle type {} is not of angle_style dpoly/bending",
+                   type);
+      const tagint p = atom->angle_atom1[i][m], n = atom->angle_atom3[i][m];
+      double d1[2], d2[2];
+      positions.difference(p, tag[i], d1);
+      positions.difference(tag[i], n, d2);
+      const DPoly::Law law = bending->turning_law(type, i, DPoly::turning_angle(d1, d2));
+      my_bending.push_back({p, tag[i], n, law.first, law.second});
+    }
+
+  std::vector<DistanceRecord> distances =
+      DPoly::gather_on_all_ranks(std::move(my_distances), world);
+  std::vector<BendingRecord> bends = DPoly::gather_on_all_ranks(std::move(my_bending), world);
 
   std::vector<double> result;
   if (comm->me == 0) {
-    std::sort(vertices.begin(), vertices.end(), [](const VertexRecord &a, const VertexRecord &b) {
-      return a.tag < b.tag;
-    });
-    std::unordered_map<tagint, int> index;
-    for (size_t k = 0; k < vertices.size(); k++) index[vertices[k].tag] = (int) k;
-
-    int dim = 0;
-    auto *segment_style = force->bond_match("dpoly/segment");
-    auto *bending_style = force->angle_match("dpoly/bending");
-    auto *contact_style = force->pair_match("dpoly/contact", 1);
-    const double *eps_l = segment_style ? (const double *) segment_style->extract("eps_l", dim)
-                                        : nullptr;
-    const double *eps_b = bending_style ? (const double *) bending_style->extract("eps_b", dim)
-                                        : nullptr;
-    double **eps_c = contact_style ? (double **) contact_style->extract("eps_c", dim) : nullptr;
-    const int *self = contact_style ? (const int *) contact_style->extract("self", dim) : nullptr;
-
-    Assembly h((int) vertices.size(), domain);
+    const std::vector<VertexRecord> &vertices = positions.vertices;
+    Assembly h((int) vertices.size());
 
     // area term of every cell, positions unwrapped along its ring
     for (int c = 0; c < cells->ncells(); c++) {
@@ -334,70 +414,33 @@ std::vector<double> ComputeDPolyHessian::assemble()
       std::vector<int> rows;
       std::vector<std::array<double, 2>> pos;
       for (tagint t : ring) {
-        const VertexRecord &v = vertices[index.at(t)];
+        const VertexRecord &v = vertices[positions.row(t)];
         if (pos.empty())
           pos.push_back({v.x[0], v.x[1]});
         else {
           double d[2];
-          h.difference(vertices[rows.back()].x, v.x, d);
+          positions.difference(vertices[rows.back()].x, v.x, d);
           pos.push_back({pos.back()[0] + d[0], pos.back()[1] + d[1]});
         }
-        rows.push_back(index.at(t));
+        rows.push_back(positions.row(t));
       }
       h.add_area(rows, pos, cells->area_stiffness(), vertices[rows[0]].a0);
     }
 
-    // segments (l0 on the first vertex in ring order) and bending (theta0 on the middle vertex)
-    auto key = [](tagint a, tagint b) {
-      return std::make_pair(std::min(a, b), std::max(a, b));
-    };
-    std::map<std::pair<tagint, tagint>, int> types;
-    for (const auto &s : segments) types[key(s.a, s.b)] = s.type;
-    for (int c = 0; c < cells->ncells(); c++) {
-      const std::vector<tagint> &ring = cells->ring(c);
-      const int n = (int) ring.size();
-      for (int m = 0; m < n; m++) {
-        const int p = index.at(ring[(m + n - 1) % n]), i = index.at(ring[m]),
-                  j = index.at(ring[(m + 1) % n]);
-        double d1[2], d2[2];
-        h.difference(vertices[p].x, vertices[i].x, d1);
-        h.difference(vertices[i].x, vertices[j].x, d2);
-        const auto t = types.find(key(ring[m], ring[(m + 1) % n]));
-        if (eps_l && t != types.end())
-          h.add_distance_term(i, j, d2, eps_l[t->second], vertices[i].l0);
-        if (eps_b && vertices[i].angle_type > 0)
-          h.add_bending(p, i, j, d1, d2, eps_b[vertices[i].angle_type], vertices[i].theta0);
-      }
-    }
-
-    // contacts: every overlapping pair but ring neighbours (same cell only with self yes)
-    if (eps_c) {
-      for (size_t a = 0; a < vertices.size(); a++)
-        for (size_t b = a + 1; b < vertices.size(); b++) {
-          const VertexRecord &u = vertices[a], &v = vertices[b];
-          if (u.cell == v.cell) {
-            if (!(self && *self)) continue;
-            const auto &links = cells->ring_neighbours(u.tag);
-            if (links.prev == v.tag || links.next == v.tag) continue;
-          }
-          double d[2];
-          h.difference(u.x, v.x, d);
-          const double s = 0.5 * (u.sigma + v.sigma);
-          if (d[0] * d[0] + d[1] * d[1] >= s * s) continue;
-          h.add_distance_term((int) a, (int) b, d, eps_c[u.type][v.type], s);
-        }
-    }
-
-    // adhesive bonds, stretched branch only: (eps_c/(2 z)) (1 - r/s)^2
-    for (const auto &bond : bonds) {
-      const VertexRecord &u = vertices[index.at(bond.atom1)], &v = vertices[index.at(bond.atom2)];
+    std::sort(distances.begin(), distances.end());
+    for (const auto &t : distances) {
       double d[2];
-      h.difference(u.x, v.x, d);
-      const double s = 0.5 * (u.sigma + v.sigma);
-      if (d[0] * d[0] + d[1] * d[1] <= s * s) continue;
-      const double z = adhesion->contact_number(adhesion->counts(), bond.cell1, bond.cell2);
-      h.add_distance_term(index.at(bond.atom1), index.at(bond.atom2), d,
-                          adhesion->stiffness(bond.type) / z, s);
+      positions.difference(t.a, t.b, d);
+      h.add_distance_term(positions.row(t.a), positions.row(t.b), d, t.first, t.second);
+    }
+
+    std::sort(bends.begin(), bends.end());
+    for (const auto &t : bends) {
+      double d1[2], d2[2];
+      positions.difference(t.p, t.c, d1);
+      positions.difference(t.c, t.n, d2);
+      h.add_bending(positions.row(t.p), positions.row(t.c), positions.row(t.n), d1, d2, t.first,
+                    t.second);
     }
     result.assign(h.H.data(), h.H.data() + h.H.size());
   }

@@ -13,6 +13,7 @@ ComputeStyle(dpoly/hessian,ComputeDPolyHessian);
 #define LMP_COMPUTE_DPOLY_HESSIAN_H
 
 #include "compute.h"
+#include "dpoly_ring.h"
 
 #include <vector>
 
@@ -40,6 +41,7 @@ class ComputeDPolyHessian : public Compute {
   bool diagonalized_once;
   std::vector<double> matrix;    // storage of the global array
   std::vector<double *> rows;
+  DPoly::VertexStateCache vertex_state;
   std::vector<double> assemble();
   void diagonalize();
 };

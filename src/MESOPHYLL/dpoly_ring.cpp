@@ -28,7 +28,7 @@ DPoly::RingLinks DPoly::ring_links(const Atom *atom, int i)
   return links;
 }
 
-static double *find_property(Atom *atom, Error *error, const char *style, const char *name)
+static int find_property(Atom *atom, Error *error, const char *style, const char *name)
 {
   int flag, cols, ghost;
   const int index = atom->find_custom_ghost(name, flag, cols, ghost);
@@ -38,13 +38,28 @@ static double *find_property(Atom *atom, Error *error, const char *style, const 
   if (!ghost)
     error->all(FLERR, "{} needs d_{} on ghost atoms too: add 'ghost yes' to its fix property/atom",
                style, name);
-  return atom->dvector[index];
+  return index;
 }
 
 DPoly::VertexState DPoly::vertex_state(Atom *atom, Error *error, const char *style)
 {
-  return {find_property(atom, error, style, "sigma"), find_property(atom, error, style, "l0"),
-          find_property(atom, error, style, "theta0"), find_property(atom, error, style, "a0")};
+  VertexStateCache cache;
+  cache.find(atom, error, style);
+  return cache.get(atom, error, style);
+}
+
+void DPoly::VertexStateCache::find(Atom *atom, Error *error, const char *style)
+{
+  diameter = find_property(atom, error, style, "sigma");
+  preferred_length = find_property(atom, error, style, "l0");
+  preferred_angle = find_property(atom, error, style, "theta0");
+  preferred_area = find_property(atom, error, style, "a0");
+}
+
+DPoly::VertexState DPoly::VertexStateCache::arrays(const Atom *atom) const
+{
+  return {atom->dvector[diameter], atom->dvector[preferred_length], atom->dvector[preferred_angle],
+          atom->dvector[preferred_area]};
 }
 
 double DPoly::segment_preferred_length(const Atom *atom, const VertexState &state, int i, int j)

@@ -41,6 +41,24 @@ namespace DPoly {
   };
   VertexState vertex_state(Atom *atom, Error *error, const char *style);
 
+  // The vertex state of a style that reads it at every force evaluation: the properties are
+  // looked up by name once, in find() (from init_style() or init()), and only their arrays are
+  // fetched each time, as atoms that are added or migrate may reallocate them.
+  class VertexStateCache {
+   public:
+    void find(Atom *atom, Error *error, const char *style);
+    // find() first if it never ran (single() may come before any run)
+    VertexState get(Atom *atom, Error *error, const char *style)
+    {
+      if (diameter < 0) find(atom, error, style);
+      return arrays(atom);
+    }
+
+   private:
+    int diameter = -1, preferred_length = -1, preferred_angle = -1, preferred_area = -1;
+    VertexState arrays(const Atom *atom) const;
+  };
+
   // Signed turning angle from segment d_in (into the vertex) to d_out (out of it), in (-pi, pi];
   // positive where a counter-clockwise ring is convex.
   inline double turning_angle(const double *d_in, const double *d_out)

@@ -11,6 +11,7 @@
 #include "domain.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_gather.h"
+#include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "dpoly_topology.h"
 #include "error.h"
@@ -392,7 +393,8 @@ void FixDPolyCells::measure_cells()
 }
 
 /* ----------------------------------------------------------------------
-   U = (eps_a/2)(a/a0 - 1)^2 per cell. With D = x_next - x_prev, da/dx_i = (D_y, -D_x)/2.
+   U = (eps_a/2)(a/a0 - 1)^2 per cell (DPoly::area_law). With D = x_next - x_prev,
+   da/dx_i = (D_y, -D_x)/2.
    Under a deformation of the box a scales with its determinant, so the cell's virial is
    -a dU/da on the diagonal (shared equally among its vertices for the per-atom virial).
 ------------------------------------------------------------------------- */
@@ -402,9 +404,9 @@ void FixDPolyCells::apply_area_forces(int vflag)
   v_init(vflag);
   area_energy = 0.0;
   for (int c = 0; c < ncells(); c++) {
-    const double strain = areas[c] / preferred_areas[c] - 1.0;
-    area_energy += 0.5 * area_eps * strain * strain;
-    area_slopes[c] = area_eps * strain / preferred_areas[c];
+    const DPoly::Law law = DPoly::area_law(area_eps, areas[c], preferred_areas[c]);
+    area_energy += law.energy;
+    area_slopes[c] = law.first;
   }
 
   double **f = atom->f;

@@ -8,6 +8,7 @@
 #include "atom.h"
 #include "bond_mesophyll_adhesion.h"
 #include "comm.h"
+#include "dpoly_laws.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "memory.h"
@@ -96,10 +97,11 @@ FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
   for (const auto &b : bonds) {
     if (b.distance <= b.contact) continue;    // compressed or touching: tension only
     const double z = adhesion->contact_number(counts, b.cell1, b.cell2);
-    const double scale = 0.5 * adhesion->stiffness(b.type) / z;
-    const double stretch = b.distance / b.contact - 1.0;
-    const double energy = scale * stretch * stretch;
-    const double barrier = scale * (threshold - 1.0) * (threshold - 1.0);
+    const double energy =
+        DPoly::adhesion_law(adhesion->stiffness(b.type), z, b.distance, b.contact).energy;
+    // the law depends on r/s only: the barrier is its energy at r/s = threshold
+    const double barrier =
+        DPoly::adhesion_law(adhesion->stiffness(b.type), z, threshold, 1.0).energy;
     bool breaks = false;
     int stochastic = 0;
     if (energy >= barrier)

@@ -8,6 +8,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "force.h"
@@ -25,7 +26,7 @@ PairDPolyContact::PairDPolyContact(LAMMPS *lmp) :
     Pair(lmp), contact_stiffness(nullptr), self_contact(1), largest_diameter(0.0)
 {
   writedata = 1;
-  born_matrix_enable = 0;
+  born_matrix_enable = 1;
 }
 
 PairDPolyContact::~PairDPolyContact()
@@ -99,7 +100,8 @@ void PairDPolyContact::init_style()
                  "is {}): bonded vertices must still repel on overlap",
                  k + 1, force->special_lj[k]);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  vertex_state.find(atom, error, "Pair style dpoly/contact");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
   double largest = 0.0;
   for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, state.diameter[i]);
   MPI_Allreduce(&largest, &largest_diameter, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -128,7 +130,7 @@ void PairDPolyContact::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
   double **x = atom->x;
   double **f = atom->f;
   int *type = atom->type;
@@ -151,10 +153,9 @@ void PairDPolyContact::compute(int eflag, int vflag)
       if (r == 0.0)
         error->one(FLERR, "Pair style dpoly/contact: vertices {} and {} coincide", atom->tag[i],
                    atom->tag[j]);
-      const double eps_c = contact_stiffness[type[i]][type[j]];
-      const double overlap = 1.0 - r / s;
-      const double fpair = eps_c * overlap / (s * r);
-      const double evdwl = eflag ? 0.5 * eps_c * overlap * overlap : 0.0;
+      const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[type[i]][type[j]], r, s);
+      const double fpair = law.fpair;
+      const double evdwl = eflag ? law.energy : 0.0;
 
       f[i][0] += delx * fpair;
       f[i][1] += dely * fpair;
@@ -168,19 +169,40 @@ void PairDPolyContact::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
+// whether local atoms i and j (one of them owned) at distance^2 rsq overlap and are not skipped
+bool PairDPolyContact::interacts(int i, int j, double rsq, double s) const
+{
+  if (rsq >= s * s || rsq == 0.0) return false;
+  const int owned = (i < atom->nlocal) ? i : j, other = (owned == i) ? j : i;
+  const DPoly::RingLinks links = DPoly::ring_links(atom, owned);
+  return !skip(owned, other, links.prev, links.next);
+}
+
 double PairDPolyContact::single(int i, int j, int itype, int jtype, double rsq,
                                 double /*factor_coul*/, double /*factor_lj*/, double &fforce)
 {
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Pair style dpoly/contact");
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
   const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
   fforce = 0.0;
-  const int owned = (i < atom->nlocal) ? i : j, other = (owned == i) ? j : i;
-  const DPoly::RingLinks links = DPoly::ring_links(atom, owned);
-  if (rsq >= s * s || rsq == 0.0 || skip(owned, other, links.prev, links.next)) return 0.0;
-  const double r = sqrt(rsq);
-  const double overlap = 1.0 - r / s;
-  fforce = contact_stiffness[itype][jtype] * overlap / (s * r);
-  return 0.5 * contact_stiffness[itype][jtype] * overlap * overlap;
+  if (!interacts(i, j, rsq, s)) return 0.0;
+  const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);
+  fforce = law.fpair;
+  return law.energy;
+}
+
+// du = dU/dr, du2 = d2U/dr2 (0 for ring neighbours and beyond contact; the special weights are
+// 1, see init_style()); du2 jumps from eps_c/s^2 to 0 at contact
+void PairDPolyContact::born_matrix(int i, int j, int itype, int jtype, double rsq,
+                                   double /*factor_coul*/, double /*factor_lj*/, double &du,
+                                   double &du2)
+{
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
+  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  du = du2 = 0.0;
+  if (!interacts(i, j, rsq, s)) return;
+  const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);
+  du = law.first;
+  du2 = law.second;
 }
 
 void PairDPolyContact::write_restart(FILE *fp)

@@ -12,6 +12,7 @@ PairStyle(dpoly/contact,PairDPolyContact);
 #ifndef LMP_PAIR_DPOLY_CONTACT_H
 #define LMP_PAIR_DPOLY_CONTACT_H
 
+#include "dpoly_ring.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
@@ -36,14 +37,17 @@ class PairDPolyContact : public Pair {
   void write_data(FILE *) override;
   void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
+  void born_matrix(int, int, int, int, double, double, double, double &, double &) override;
   void *extract(const char *, int &) override;
 
  protected:
   double **contact_stiffness;    // eps_c per type pair
   int self_contact;              // repel non-adjacent vertices of the same cell
   double largest_diameter;       // max sigma when the run started: the cutoff
+  DPoly::VertexStateCache vertex_state;
   void allocate();
   bool skip(int i, int j, tagint prev, tagint next) const;
+  bool interacts(int i, int j, double rsq, double s) const;
 };
 
 }    // namespace LAMMPS_NS
