@@ -18,7 +18,8 @@ read(workdir, log="log.lammps", returncode=None, wall=0.0, output="")
     The Run of a finished run's folder, without running anything (run() ends with it).
 Run: workdir, returncode, wall (seconds of the LAMMPS process), output (captured stdout and
     stderr, or ""), log (the log's text, "" without a log), thermo, loops, minimizations,
-    checks, failures, growth, as the functions below return them.
+    checks as the functions below return them, failures (the checks that FAILED), growth
+    ({N: growth_table()} of every growth.N<N>.txt in workdir).
 thermo_blocks(path)  -> [(columns, rows)] of every thermo table (tests/regression.py's reader).
 loop_times(log)      -> [Loop(seconds, procs, steps, atoms, cpu)] per "Loop time of ..." line;
                         cpu: the "% CPU use" that follows, as a fraction (None if absent).
