@@ -18,8 +18,6 @@ Prints a table and a verdict, writes CSV and a PNG. Needs python3-numpy and pyth
 import argparse
 import csv
 import os
-import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -30,16 +28,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "tests"))
-from regression import thermo_blocks  # noqa: E402  (the thermo-table reader of the tests)
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 MODES = 8           # eigenvalues reported per minimum
 ZERO = 1.0e-8       # the compute's zero level
 COMPACTION = 1e-3   # a step whose phi rises by more than this counts as a compaction
 
 
-def minima_rows(log_path):
+def minima_rows(thermo):
     """The last thermo row of every minimization: the state at the minimum."""
-    return [dict(zip(columns, rows[-1])) for columns, rows in thermo_blocks(log_path) if rows]
+    return [dict(zip(columns, rows[-1])) for columns, rows in thermo if rows]
 
 
 def lowest_nonzero(row):
@@ -60,8 +58,7 @@ def main():
     args = p.parse_args()
 
     with tempfile.TemporaryDirectory() as work:
-        work = os.path.join(work, "run")
-        shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False)
+        work = mesophyll_run.scratch(os.path.join(work, "run"))
         path = os.path.join(work, "in.mesophyll")
         text = open(path).read()
         columns = " ".join(f"c_hessian[{k}]" for k in range(1, MODES + 1))
@@ -69,16 +66,15 @@ def main():
                             f"compute         hessian all dpoly/hessian modes {MODES} zero {ZERO}\n"
                             f"thermo_style    custom step pe press vol c_hessian {columns}")
         open(path, "w").write(text)
-        command = [os.path.abspath(args.lmp), "-in", "in.mesophyll", "-var", "N", str(args.cells),
-                   "-var", "set", args.set, "-var", "seed", args.seed, "-var", "steps",
-                   str(args.steps), "-log", "log.lammps", "-screen", "none"]
-        subprocess.run(command, cwd=work, check=True)
-        minima = minima_rows(os.path.join(work, "log.lammps"))
-        growth = np.loadtxt(os.path.join(work, f"growth.N{args.cells}.txt"), ndmin=2)
+        result = mesophyll_run.run(os.path.abspath(args.lmp), "in.mesophyll", work,
+                                   {"N": args.cells, "set": args.set, "seed": args.seed,
+                                    "steps": args.steps}, example=None)
+    minima = minima_rows(result.thermo)
+    growth = result.growth[args.cells]
 
-    steps = growth[:, 0].astype(int)
-    phi = growth[:, 3]
-    compaction = np.diff(np.concatenate([[0.0], growth[:, 7]]))
+    steps = np.array(growth["step"]).astype(int)
+    phi = np.array(growth["phi_patch"])
+    compaction = np.diff(np.concatenate([[0.0], growth["dphi_plus"]]))
     lowest = np.array([lowest_nonzero(m) for m in minima[:len(steps)]])
     zero_modes = np.array([m["c_hessian"] for m in minima[:len(steps)]])
 

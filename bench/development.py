@@ -16,52 +16,33 @@ import argparse
 import csv
 import os
 import platform
-import re
-import shutil
-import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 
 # The figures for the published code (FIRE, N = 16, this kind of machine)
 PUBLISHED = "published code, N = 16: 3e3 -> 1e5 FIRE iterations per growth step, " \
             "about 5.4 min for the first 11 growth steps (phi 0.93 -> 0.49)"
 
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
-EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
-
 
 def run(args, cells, ranks, workdir):
-    example = os.path.join(ROOT, "examples", "mesophyll")
-    shutil.copytree(example, workdir, dirs_exist_ok=True, symlinks=False)
-    command = [args.lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "steps",
-               str(args.steps), "-var", "refine", args.refine, "-log", "log.bench", "-screen",
-               "none"]
-    if ranks > 1:
-        command = args.mpirun.split() + ["-np", str(ranks)] + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.perf_counter()
-    subprocess.run(command, cwd=workdir, env=env, check=True)
-    total = time.perf_counter() - start
-
-    with open(os.path.join(workdir, "log.bench")) as f:
-        log = f.read()
-    loops = [(float(m.group(1)), int(m.group(4))) for m in LOOP.finditer(log)]
-    evals = [(int(m.group(1)), int(m.group(2))) for m in EVALS.finditer(log)]
+    result = mesophyll_run.run(args.lmp, "in.mesophyll", workdir,
+                               {"N": cells, "steps": args.steps, "refine": args.refine},
+                               ranks=ranks, log="log.bench", mpirun=args.mpirun)
+    growth = result.growth[cells]
     rows = []
-    with open(os.path.join(workdir, f"growth.N{cells}.txt")) as f:
-        names = f.readline().lstrip("#").split()
-        for k, line in enumerate(f):
-            rec = dict(zip(names, line.split()))
-            rows.append({"cells": cells, "ranks": ranks, "refine": args.refine,
-                         "step": int(rec["step"]), "phi_patch": float(rec["phi_patch"]),
-                         "calA": float(rec["calA"]), "vertices": loops[k][1],
-                         "iterations": evals[k][0], "force_evaluations": evals[k][1],
-                         "wall_s": loops[k][0]})
-    return rows, total
+    for k in range(len(growth["step"])):
+        loop, (iterations, evaluations) = result.loops[k], result.minimizations[k]
+        rows.append({"cells": cells, "ranks": ranks, "refine": args.refine,
+                     "step": int(growth["step"][k]), "phi_patch": growth["phi_patch"][k],
+                     "calA": growth["calA"][k], "vertices": loop.atoms,
+                     "iterations": iterations, "force_evaluations": evaluations,
+                     "wall_s": loop.seconds})
+    return rows, result.wall
 
 
 def main():

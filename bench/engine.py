@@ -14,11 +14,12 @@ of the package is at most 1.5x. Standard library only.
 import argparse
 import csv
 import os
-import re
-import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 
 COMMON = """units lj
 dimension 2
@@ -50,15 +51,11 @@ run {steps}
 
 
 def time_per_evaluation(lmp, text, steps, workdir, name):
-    path = os.path.join(workdir, f"in.{name}")
-    with open(path, "w") as f:
+    with open(os.path.join(workdir, f"in.{name}"), "w") as f:
         f.write(text)
-    subprocess.run([lmp, "-in", path, "-log", os.path.join(workdir, f"log.{name}"), "-screen",
-                    "none"], check=True, cwd=workdir)
-    log = open(os.path.join(workdir, f"log.{name}")).read()
-    loop = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms",
-                      log)[-1]
-    return float(loop[0]) / int(loop[1]) / int(loop[2]) * 1e6, int(loop[2])
+    loop = mesophyll_run.run(lmp, f"in.{name}", workdir, log=f"log.{name}",
+                             example=None).loops[-1]
+    return loop.seconds / loop.steps / loop.atoms * 1e6, loop.atoms
 
 
 def main():

@@ -25,9 +25,7 @@ import argparse
 import concurrent.futures
 import csv
 import os
-import re
-import shutil
-import subprocess
+import sys
 import tempfile
 
 import matplotlib
@@ -37,9 +35,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on")
-CPU_USE = re.compile(r"^([0-9.]+)% CPU use", re.MULTILINE)
-EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 TOTAL_GROWTH = 20.0    # 40 steps of delta_a 0.5
 # cg stalls on jammed tissues (doc/Howto_mesophyll.rst): capped so that it ends in minutes
 MAXITER = {"cg": "20000"}
@@ -53,33 +50,16 @@ KNOBS = [("ftol", ["1e-6", "1e-8", "1e-10"]), ("min", ["cg"]), ("delta_a", ["0.2
 
 def run(lmp, cells, setting, workroot, mpirun="mpirun"):
     name = "_".join(f"{k}{v}" for k, v in setting.items()).replace("/", "")
-    work = os.path.join(workroot, name)
-    shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False)
-    if setting["min"] != "fire/nph":    # the input's min_style line names fire/nph
-        path = os.path.join(work, "in.mesophyll")
-        text = open(path).read().replace("min_style       fire/nph",
-                                         f"min_style       {setting['min']}")
-        open(path, "w").write(text)
     steps = int(round(TOTAL_GROWTH / float(setting["delta_a"])))
-    command = [lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "steps", str(steps),
-               "-var", "delta_a", setting["delta_a"], "-var", "ftol", setting["ftol"],
-               "-var", "refine", setting["refine"], "-var", "maxiter",
-               MAXITER.get(setting["min"], "200000"),
-               "-log", "log.lammps", "-screen", "none"]
-    if setting["ranks"] > 1:
-        command = [mpirun, "-np", str(setting["ranks"])] + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    subprocess.run(command, cwd=work, env=env, check=True)
-    log = open(os.path.join(work, "log.lammps")).read()
-    with open(os.path.join(work, f"growth.N{cells}.txt")) as f:
-        names = f.readline().lstrip("#").split()
-    data = np.loadtxt(os.path.join(work, f"growth.N{cells}.txt"), ndmin=2)
-    record = {n: data[:, k] for k, n in enumerate(names)}
-    walls = [float(m.group(1)) for m in LOOP.finditer(log)]
-    cpu_use = [float(m.group(1)) / 100 for m in CPU_USE.finditer(log)]
-    record["wall"] = sum(walls)
-    record["cpu"] = sum(w * c for w, c in zip(walls, cpu_use))
-    record["evaluations"] = sum(int(m.group(2)) for m in EVALS.finditer(log))
+    result = mesophyll_run.run(
+        lmp, "in.mesophyll", os.path.join(workroot, name),
+        {"N": cells, "steps": steps, "delta_a": setting["delta_a"], "ftol": setting["ftol"],
+         "refine": setting["refine"], "maxiter": MAXITER.get(setting["min"], "200000"),
+         "min_style": setting["min"]}, ranks=setting["ranks"], mpirun=mpirun)
+    record = {n: np.array(v) for n, v in result.growth[cells].items()}
+    record["wall"] = sum(loop.seconds for loop in result.loops)
+    record["cpu"] = sum(loop.seconds * loop.cpu for loop in result.loops)
+    record["evaluations"] = sum(evaluations for _, evaluations in result.minimizations)
     return record
 
 

@@ -12,16 +12,16 @@ Standard library only.
 """
 import argparse
 import csv
-import math
 import os
 import re
-import shutil
 import subprocess
+import sys
 import tempfile
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HERE = os.path.join(ROOT, "bench")
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 
 # name, what it stresses, input ("mesophyll" or a file under bench/stability), variables
 CASES = [
@@ -46,9 +46,9 @@ CASES = [
 def classify(log, returncode):
     nan = re.search(r"^\s*\d+\s.*\b(nan|inf)\b", log, re.MULTILINE | re.IGNORECASE)
     error = re.search(r"^ERROR.*$", log, re.MULTILINE)
-    failed = re.findall(r"fix dpoly/check: (minimum \d+ at step \d+):.*?; FAILED; (.*)$", log,
-                        re.MULTILINE)
-    minima = len(re.findall(r"^fix dpoly/check: minimum", log, re.MULTILINE))
+    checks = mesophyll_run.check_lines(log)
+    failed = [(f"minimum {c.minimum} at step {c.step}", c.problems) for c in checks if c.failed]
+    minima = len(checks)
     if nan:
         return "SILENT FAILURE", f"NaN or inf in thermo output: {nan.group(0).strip()[:120]}"
     if error:
@@ -64,29 +64,18 @@ def classify(log, returncode):
 def run_case(lmp, case, workroot):
     name, _, source, variables = case
     work = os.path.join(workroot, re.sub(r"\W+", "_", name))
-    shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False)
     if source == "mesophyll":
-        command = [lmp, "-in", "in.mesophyll", "-var", "N", "16"]
+        source, variables, files = "in.mesophyll", dict(N=16, **variables), []
     else:
-        shutil.copy(os.path.join(HERE, "stability", source), work)
-        shutil.copy(os.path.join(ROOT, "examples", "tissue", "ring32.mol"), work)
-        command = [lmp, "-in", source]
-    for key, value in variables.items():
-        command += ["-var", key, str(value)]
-    command += ["-log", "log.lammps", "-screen", "none"]
-    start = time.perf_counter()
+        files = [os.path.join(HERE, "stability", source),
+                 os.path.join(ROOT, "examples", "tissue", "ring32.mol")]
     try:
-        result = subprocess.run(command, cwd=work, timeout=900, capture_output=True, text=True)
-        returncode = result.returncode
-    except subprocess.TimeoutExpired:
-        returncode = "timeout"
-    wall = time.perf_counter() - start
-    log_path = os.path.join(work, "log.lammps")
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    if returncode == "timeout":
-        return "SILENT FAILURE", "did not finish within 900 s", wall
-    outcome, detail = classify(log, returncode)
-    return outcome, detail, wall
+        result = mesophyll_run.run(lmp, source, work, variables, files=files, check=False,
+                                   capture=True, timeout=900)
+    except subprocess.TimeoutExpired as timeout:
+        return "SILENT FAILURE", "did not finish within 900 s", timeout.timeout
+    outcome, detail = classify(result.log, result.returncode)
+    return outcome, detail, result.wall
 
 
 def main():

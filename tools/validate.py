@@ -19,9 +19,6 @@ import argparse
 import collections
 import concurrent.futures
 import os
-import re
-import shutil
-import subprocess
 import tempfile
 
 import matplotlib
@@ -29,6 +26,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import mesophyll_run  # noqa: E402  (next to this script)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PHI_MAX = 0.975
@@ -40,8 +38,6 @@ MAX_STEPS = 400    # slow growth stops here, short of the default's total growth
 MAXITER = {"paper": 20000}    # the paper's rules do not converge (see the report)
 FTOL = {"low_pressure": 1e-13}    # |P - P0| must resolve P0 = 1e-7
 P0 = {"low_pressure": 1e-7, "high_pressure": 5e-2}    # the others: 1e-3
-FAILURE = re.compile(r"^fix dpoly/check: minimum (\d+) at step \d+: .*?; FAILED; (.*)$",
-                     re.MULTILINE)
 KINDS = [("cross themselves", "rings cross themselves"),
          ("max iterations", "minimizer stopped at max iterations"),
          ("|P - P0|/P0 =", "P off P0 by more than 1e-6")]
@@ -50,28 +46,19 @@ KINDS = [("cross themselves", "rings cross themselves"),
 def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache):
     """Run one development (or take it from the cache); return its growth record."""
     work = os.path.join(cache or workroot, name)
-    growth = os.path.join(work, f"growth.N{cells}.txt")
-    returncode = 0
-    if not (cache and os.path.exists(growth)):
-        shutil.copytree(os.path.join(ROOT, "examples", "mesophyll"), work, symlinks=False,
-                        dirs_exist_ok=True)
-        command = [lmp, "-in", "in.mesophyll", "-var", "N", str(cells), "-var", "set", pset,
-                   "-var", "seed", str(seed), "-var", "steps", str(steps), "-var", "phi_stop",
-                   "0.3", "-var", "ftol", str(FTOL.get(pset, 1e-10)), "-var", "maxiter",
-                   str(MAXITER.get(pset, 200000)), "-var", "refine", str(refine), "-log",
-                   "log.lammps", "-screen", "none"]
-        returncode = subprocess.run(command, cwd=work).returncode
-    with open(growth) as f:
-        names = f.readline().lstrip("#").split()
-    data = np.loadtxt(growth, ndmin=2)
-    record = {n: data[:, k] for k, n in enumerate(names)}
-    with open(os.path.join(work, "log.lammps")) as f:
-        log = f.read()
-    atoms = re.findall(r"^Loop time of .* with (\d+) atoms", log, re.MULTILINE)
-    record["vertices"] = int(atoms[-1]) if atoms else 0
-    record["failures"] = [(int(m.group(1)), m.group(2)) for m in FAILURE.finditer(log)]
+    if cache and os.path.exists(os.path.join(work, f"growth.N{cells}.txt")):
+        result = mesophyll_run.read(work, returncode=0)
+    else:
+        result = mesophyll_run.run(
+            lmp, "in.mesophyll", work,
+            {"N": cells, "set": pset, "seed": seed, "steps": steps, "phi_stop": "0.3",
+             "ftol": FTOL.get(pset, 1e-10), "maxiter": MAXITER.get(pset, 200000),
+             "refine": refine}, check=False)
+    record = {n: np.array(v) for n, v in result.growth[cells].items()}
+    record["vertices"] = result.loops[-1].atoms if result.loops else 0
+    record["failures"] = [(c.minimum, c.problems) for c in result.failures]
     record["failed_checks"] = len(record["failures"])
-    record["exit"] = returncode
+    record["exit"] = result.returncode
     return name, record
 
 
