@@ -10,8 +10,8 @@ Runs examples/mesophyll/in.mesophyll:
      insertion), with as many growth steps as give the default's total growth of a0 (40 x 0.5);
   C. the paper's rules (z counts cells, calA_max 3 without growth above) beside the default
      (N = 64, without insertion).
-Then states, claim by claim of model.md section 7, whether it holds, with the numbers, and draws
-the PNGs next to the text. --quick runs a few steps only (to try the script); --cache keeps each
+Then states, claim by claim of the paper's Fig 2 (listed in the Howto's "The main run"), whether
+it holds, with the numbers, and draws the PNGs next to the text. --quick runs a few steps only (to try the script); --cache keeps each
 run's record and log in DIR and reuses them. The runs take about an hour on 2 cores. Needs
 python3-numpy and python3-matplotlib.
 """
@@ -132,7 +132,7 @@ def main():
 
 
 def default_section(records, label):
-    """Table and claims of model.md section 7 for the default run of three seeds."""
+    """Table and the paper's Fig 2 claims for the default run of three seeds."""
     lines = ["", f"## Default run {label} (N = 64, Table 1, P0 = 1e-3)", "",
              "| seed | steps | phi start -> end (min) | max abs(P/P0 - 1) | calA dip | calA at "
              "phi~0.53 | z at phi~0.5 | delta_phi_plus | vertices end | failed checks |",
@@ -150,7 +150,8 @@ def default_section(records, label):
         calA.append(calA53)
         z.append(z50)
         lowest.append(r["phi_patch"].min())
-    lines += ["", "Claims of model.md section 7, one by one:", ""]
+    lines += ["", "Claims of the paper for its Fig 2 (main text; listed in doc/Howto_mesophyll.rst, "
+              "section \"The main run\"), one by one:", ""]
     lines.append(f"- *phi falls monotonically from about 0.975 to 0.5 and below while P stays at "
                  f"P0*: the runs start at phi {records[0]['phi_patch'][0]:.3f} (the generated "
                  f"tissue, not 0.975) and reach {min(lowest):.3f} at the lowest; steps "
