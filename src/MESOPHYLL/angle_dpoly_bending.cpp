@@ -21,26 +21,10 @@
 using namespace LAMMPS_NS;
 
 AngleDPolyBending::AngleDPolyBending(LAMMPS *lmp) :
-    Angle(lmp), stiffness(nullptr), mean_interior_angle(MathConst::MY_PI)
+    PerTypeStiffness(lmp, "Angle style dpoly/bending", "eps_b", &Atom::nangletypes),
+    mean_interior_angle(MathConst::MY_PI)
 {
   born_matrix_enable = 1;
-}
-
-AngleDPolyBending::~AngleDPolyBending()
-{
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(stiffness);
-  }
-}
-
-void AngleDPolyBending::allocate()
-{
-  allocated = 1;
-  const int np1 = atom->nangletypes + 1;
-  memory->create(stiffness, np1, "angle:stiffness");
-  memory->create(setflag, np1, "angle:setflag");
-  for (int i = 1; i < np1; i++) setflag[i] = 0;
 }
 
 void AngleDPolyBending::init_style()
@@ -113,47 +97,10 @@ void AngleDPolyBending::compute(int eflag, int vflag)
   }
 }
 
-void AngleDPolyBending::coeff(int narg, char **arg)
-{
-  if (narg != 2)
-    error->all(FLERR, "Angle style dpoly/bending takes one coefficient (eps_b), got {}", narg - 1);
-  if (!allocated) allocate();
-
-  int ilo, ihi;
-  utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
-  const double eps_b = utils::numeric(FLERR, arg[1], false, lmp);
-  if (eps_b < 0.0)
-    error->all(FLERR, "Angle style dpoly/bending eps_b must be >= 0, got {}", arg[1]);
-
-  for (int i = ilo; i <= ihi; i++) {
-    stiffness[i] = eps_b;
-    setflag[i] = 1;
-  }
-}
-
 // theta0 is per vertex, not per type: report the mean interior angle pi - <theta0>
 double AngleDPolyBending::equilibrium_angle(int /*type*/)
 {
   return mean_interior_angle;
-}
-
-void AngleDPolyBending::write_restart(FILE *fp)
-{
-  fwrite(&stiffness[1], sizeof(double), atom->nangletypes, fp);
-}
-
-void AngleDPolyBending::read_restart(FILE *fp)
-{
-  allocate();
-  if (comm->me == 0)
-    utils::sfread(FLERR, &stiffness[1], sizeof(double), atom->nangletypes, fp, nullptr, error);
-  MPI_Bcast(&stiffness[1], atom->nangletypes, MPI_DOUBLE, 0, world);
-  for (int i = 1; i <= atom->nangletypes; i++) setflag[i] = 1;
-}
-
-void AngleDPolyBending::write_data(FILE *fp)
-{
-  for (int i = 1; i <= atom->nangletypes; i++) fprintf(fp, "%d %.15g\n", i, stiffness[i]);
 }
 
 double AngleDPolyBending::single(int type, int i1, int i2, int i3)
@@ -193,11 +140,4 @@ void AngleDPolyBending::born_matrix(int type, int i1, int i2, int i3, double &du
   const double sine = sin(theta), cosine = cos(theta);
   du = law.first / sine;
   du2 = (law.second * sine - law.first * cosine) / (sine * sine * sine);
-}
-
-void *AngleDPolyBending::extract(const char *str, int &dim)
-{
-  dim = 1;
-  if (strcmp(str, "eps_b") == 0) return (void *) stiffness;
-  return nullptr;
 }

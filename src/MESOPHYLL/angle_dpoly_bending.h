@@ -15,35 +15,28 @@ AngleStyle(dpoly/bending,AngleDPolyBending);
 #include "angle.h"
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
+#include "dpoly_stiffness.h"
 
 namespace LAMMPS_NS {
 
 // Bending term of a deformable polygon: U = (eps_b/2)(theta - theta0)^2 per vertex, with theta
 // the signed turning angle at the angle's middle atom and theta0 that vertex's preferred value.
-class AngleDPolyBending : public Angle {
+class AngleDPolyBending : public DPoly::PerTypeStiffness<Angle> {
  public:
   AngleDPolyBending(class LAMMPS *);
-  ~AngleDPolyBending() override;
   void init_style() override;
   void compute(int, int) override;
-  void coeff(int, char **) override;
   double equilibrium_angle(int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
-  void write_data(FILE *) override;
   double single(int, int, int, int) override;
   void born_matrix(int, int, int, int, double &, double &) override;
 
   // The bending law in the signed turning angle theta at the local vertex 'centre': U,
   // dU/dtheta and d2U/dtheta2, regular everywhere (born_matrix() is not at straight vertices).
   DPoly::Law turning_law(int type, int centre, double theta);
-  void *extract(const char *, int &) override;
 
  protected:
-  double *stiffness;             // eps_b per angle type
   double mean_interior_angle;    // pi - <theta0> when the run started, for equilibrium_angle()
   DPoly::VertexStateCache vertex_state;
-  void allocate();
 };
 
 }    // namespace LAMMPS_NS

@@ -23,26 +23,10 @@
 using namespace LAMMPS_NS;
 
 BondDPolySegment::BondDPolySegment(LAMMPS *lmp) :
-    Bond(lmp), stiffness(nullptr), longest_preferred(0.0)
+    PerTypeStiffness(lmp, "Bond style dpoly/segment", "eps_l", &Atom::nbondtypes),
+    longest_preferred(0.0)
 {
   born_matrix_enable = 1;
-}
-
-BondDPolySegment::~BondDPolySegment()
-{
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(stiffness);
-  }
-}
-
-void BondDPolySegment::allocate()
-{
-  allocated = 1;
-  const int np1 = atom->nbondtypes + 1;
-  memory->create(stiffness, np1, "bond:stiffness");
-  memory->create(setflag, np1, "bond:setflag");
-  for (int i = 1; i < np1; i++) setflag[i] = 0;
 }
 
 void BondDPolySegment::init_style()
@@ -127,46 +111,10 @@ void BondDPolySegment::compute(int eflag, int vflag)
   }
 }
 
-void BondDPolySegment::coeff(int narg, char **arg)
-{
-  if (narg != 2)
-    error->all(FLERR, "Bond style dpoly/segment takes one coefficient (eps_l), got {}", narg - 1);
-  if (!allocated) allocate();
-
-  int ilo, ihi;
-  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double eps_l = utils::numeric(FLERR, arg[1], false, lmp);
-  if (eps_l < 0.0) error->all(FLERR, "Bond style dpoly/segment eps_l must be >= 0, got {}", arg[1]);
-
-  for (int i = ilo; i <= ihi; i++) {
-    stiffness[i] = eps_l;
-    setflag[i] = 1;
-  }
-}
-
 // l0 is per vertex, not per type: report the largest, as a bound for neighbor and comm checks
 double BondDPolySegment::equilibrium_distance(int /*type*/)
 {
   return longest_preferred;
-}
-
-void BondDPolySegment::write_restart(FILE *fp)
-{
-  fwrite(&stiffness[1], sizeof(double), atom->nbondtypes, fp);
-}
-
-void BondDPolySegment::read_restart(FILE *fp)
-{
-  allocate();
-  if (comm->me == 0)
-    utils::sfread(FLERR, &stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr, error);
-  MPI_Bcast(&stiffness[1], atom->nbondtypes, MPI_DOUBLE, 0, world);
-  for (int i = 1; i <= atom->nbondtypes; i++) setflag[i] = 1;
-}
-
-void BondDPolySegment::write_data(FILE *fp)
-{
-  for (int i = 1; i <= atom->nbondtypes; i++) fprintf(fp, "%d %.15g\n", i, stiffness[i]);
 }
 
 double BondDPolySegment::single(int type, double rsq, int i, int j, double &fforce)
@@ -187,11 +135,4 @@ void BondDPolySegment::born_matrix(int type, double rsq, int i, int j, double &d
       DPoly::segment_law(stiffness[type], sqrt(rsq), preferred_length(state, i, j));
   du = law.first;
   du2 = law.second;
-}
-
-void *BondDPolySegment::extract(const char *str, int &dim)
-{
-  dim = 1;
-  if (strcmp(str, "eps_l") == 0) return (void *) stiffness;
-  return nullptr;
 }

@@ -14,31 +14,24 @@ BondStyle(dpoly/segment,BondDPolySegment);
 
 #include "bond.h"
 #include "dpoly_ring.h"
+#include "dpoly_stiffness.h"
 
 namespace LAMMPS_NS {
 
 // Length term of a deformable polygon: U = (eps_l/2)(l/l0 - 1)^2 per ring segment, where l0 is
 // the per-vertex preferred length held by the segment's first vertex in ring order.
-class BondDPolySegment : public Bond {
+class BondDPolySegment : public DPoly::PerTypeStiffness<Bond> {
  public:
   BondDPolySegment(class LAMMPS *);
-  ~BondDPolySegment() override;
   void init_style() override;
   void compute(int, int) override;
-  void coeff(int, char **) override;
   double equilibrium_distance(int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
-  void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
   void born_matrix(int, double, int, int, double &, double &) override;
-  void *extract(const char *, int &) override;
 
  protected:
-  double *stiffness;           // eps_l per bond type
   double longest_preferred;    // largest l0 when the run started, for equilibrium_distance()
   DPoly::VertexStateCache vertex_state;
-  void allocate();
   double preferred_length(const DPoly::VertexState &state, int i, int j);
 };
 

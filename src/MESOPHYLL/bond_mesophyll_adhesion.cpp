@@ -8,7 +8,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "dpoly_gather.h"
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
@@ -27,26 +26,10 @@ using namespace LAMMPS_NS;
 using DPoly::AdhesiveBond;
 
 BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
-    Bond(lmp), contact_stiffness(nullptr), rule(ContactRule::BONDS)
+    PerTypeStiffness(lmp, "Bond style mesophyll/adhesion", "eps_c", &Atom::nbondtypes),
+    rule(ContactRule::BONDS)
 {
   born_matrix_enable = 1;
-}
-
-BondMesophyllAdhesion::~BondMesophyllAdhesion()
-{
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(contact_stiffness);
-  }
-}
-
-void BondMesophyllAdhesion::allocate()
-{
-  allocated = 1;
-  const int np1 = atom->nbondtypes + 1;
-  memory->create(contact_stiffness, np1, "bond:contact_stiffness");
-  memory->create(setflag, np1, "bond:setflag");
-  for (int i = 1; i < np1; i++) setflag[i] = 0;
 }
 
 void BondMesophyllAdhesion::settings(int narg, char **arg)
@@ -138,7 +121,7 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
     if (r <= s) continue;    // overlap belongs to the pair style
 
     const DPoly::DistanceLaw law =
-        DPoly::adhesion_law(contact_stiffness[type], contact_number(i1, i2), r, s);
+        DPoly::adhesion_law(stiffness[type], contact_number(i1, i2), r, s);
     const double fbond = law.fpair;
     const double ebond = eflag ? law.energy : 0.0;
 
@@ -226,48 +209,10 @@ void BondMesophyllAdhesion::remove_bonds(const std::vector<AdhesiveBond> &gone)
   atom->nbonds -= (bigint) gone.size();
 }
 
-void BondMesophyllAdhesion::coeff(int narg, char **arg)
-{
-  if (narg != 2)
-    error->all(FLERR, "Bond style mesophyll/adhesion takes one coefficient (eps_c), got {}",
-               narg - 1);
-  if (!allocated) allocate();
-
-  int ilo, ihi;
-  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double eps_c = utils::numeric(FLERR, arg[1], false, lmp);
-  if (eps_c < 0.0)
-    error->all(FLERR, "Bond style mesophyll/adhesion eps_c must be >= 0, got {}", arg[1]);
-  for (int i = ilo; i <= ihi; i++) {
-    contact_stiffness[i] = eps_c;
-    setflag[i] = 1;
-  }
-}
-
 // the bond pulls only beyond contact, and the contact distance is per vertex pair
 double BondMesophyllAdhesion::equilibrium_distance(int /*type*/)
 {
   return 0.0;
-}
-
-void BondMesophyllAdhesion::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  fwrite(&contact_stiffness[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&setflag[1], sizeof(int), atom->nbondtypes, fp);
-}
-
-void BondMesophyllAdhesion::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &contact_stiffness[1], sizeof(double), atom->nbondtypes, fp, nullptr,
-                  error);
-    utils::sfread(FLERR, &setflag[1], sizeof(int), atom->nbondtypes, fp, nullptr, error);
-  }
-  MPI_Bcast(&contact_stiffness[1], atom->nbondtypes, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&setflag[1], atom->nbondtypes, MPI_INT, 0, world);
 }
 
 void BondMesophyllAdhesion::write_restart_settings(FILE *fp)
@@ -284,12 +229,6 @@ void BondMesophyllAdhesion::read_restart_settings(FILE *fp)
   rule = rule_id ? ContactRule::CELLS : ContactRule::BONDS;
 }
 
-void BondMesophyllAdhesion::write_data(FILE *fp)
-{
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i]) fprintf(fp, "%d %.15g\n", i, contact_stiffness[i]);
-}
-
 double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double &fforce)
 {
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
@@ -297,8 +236,7 @@ double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double 
   const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
   fforce = 0.0;
   if (r <= s) return 0.0;
-  const DPoly::DistanceLaw law =
-      DPoly::adhesion_law(contact_stiffness[type], contact_number(i, j), r, s);
+  const DPoly::DistanceLaw law = DPoly::adhesion_law(stiffness[type], contact_number(i, j), r, s);
   fforce = law.fpair;
   return law.energy;
 }
@@ -312,15 +250,7 @@ void BondMesophyllAdhesion::born_matrix(int type, double rsq, int i, int j, doub
   const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
   du = du2 = 0.0;
   if (r <= s) return;
-  const DPoly::DistanceLaw law =
-      DPoly::adhesion_law(contact_stiffness[type], contact_number(i, j), r, s);
+  const DPoly::DistanceLaw law = DPoly::adhesion_law(stiffness[type], contact_number(i, j), r, s);
   du = law.first;
   du2 = law.second;
-}
-
-void *BondMesophyllAdhesion::extract(const char *str, int &dim)
-{
-  dim = 1;
-  if (strcmp(str, "eps_c") == 0) return (void *) contact_stiffness;
-  return nullptr;
 }

@@ -15,6 +15,7 @@ BondStyle(mesophyll/adhesion,BondMesophyllAdhesion);
 #include "bond.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_ring.h"
+#include "dpoly_stiffness.h"
 
 #include <vector>
 
@@ -26,23 +27,17 @@ namespace LAMMPS_NS {
 // is counted twice. The style owns the table of adhesive bonds per vertex and per cell: it is
 // recounted whenever fix dpoly/cells re-reads the cells (every run start) and is fixed during a
 // run; bonds leave it only through remove_bonds().
-class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
+class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly::CellAdhesion {
  public:
   BondMesophyllAdhesion(class LAMMPS *);
-  ~BondMesophyllAdhesion() override;
   void settings(int, char **) override;
   void init_style() override;
   void compute(int, int) override;
-  void coeff(int, char **) override;
   double equilibrium_distance(int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
-  void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
   void born_matrix(int, double, int, int, double &, double &) override;
-  void *extract(const char *, int &) override;
 
   // The style of this LAMMPS instance (alone or in hybrid); an error names 'who' if none.
   static BondMesophyllAdhesion *find(class LAMMPS *lmp, const char *who);
@@ -50,7 +45,6 @@ class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
   // Collective: every adhesive bond of the system with its current stretch, sorted by IDs.
   std::vector<DPoly::AdhesiveBond> gather_bonds();
   bool is_adhesive_type(int type) const { return allocated && type > 0 && setflag[type]; }
-  double stiffness(int type) const { return contact_stiffness[type]; }
 
   // The current bond counts, and a collective recount from the bonds (DPoly::CellAdhesion).
   const DPoly::AdhesionCounts &counts() const override { return contacts; }
@@ -66,11 +60,9 @@ class BondMesophyllAdhesion : public Bond, public DPoly::CellAdhesion {
 
  protected:
   enum class ContactRule { BONDS, CELLS };
-  double *contact_stiffness;    // eps_c per bond type
   ContactRule rule;
   DPoly::AdhesionCounts contacts;
   DPoly::VertexStateCache vertex_state;
-  void allocate();
   double contact_number(int i, int j);
 };
 

@@ -11,7 +11,6 @@
 #include "bond_hybrid.h"
 #include "comm.h"
 #include "domain.h"
-#include "dpoly_gather.h"
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"

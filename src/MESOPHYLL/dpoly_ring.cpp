@@ -6,7 +6,11 @@
 #include "dpoly_ring.h"
 
 #include "atom.h"
+#include "comm.h"
+#include "domain.h"
 #include "error.h"
+#include "lammps.h"
+#include "special.h"
 
 #include <utility>
 
@@ -71,4 +75,19 @@ double DPoly::segment_preferred_length(const Atom *atom, const VertexState &stat
   if (links.next == atom->tag[j]) return state.preferred_length[i];
   if (links.prev == atom->tag[j]) return state.preferred_length[j];
   return -1.0;
+}
+
+void DPoly::rebuild_special_and_ghosts(LAMMPS *lmp)
+{
+  Special special(lmp);
+  special.build();
+  Domain *domain = lmp->domain;
+  Atom *atom = lmp->atom;
+  if (domain->triclinic) domain->x2lamda(atom->nlocal);
+  domain->pbc();
+  domain->reset_box();
+  lmp->comm->setup();
+  lmp->comm->exchange();
+  lmp->comm->borders();
+  if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
 }

@@ -3,7 +3,8 @@
    License, version 2 or later, like LAMMPS itself.
 ------------------------------------------------------------------------- */
 
-// Shared bookkeeping of deformable-polygon (DP) rings, used by every DP style.
+// Shared bookkeeping of deformable-polygon (DP) rings, used by every DP style: ring links, the
+// per-vertex state, whole-system tables and the topology refresh after bonds or atoms change.
 //
 // A cell is a molecule whose vertices form one closed counter-clockwise ring. The ring order is
 // read from the angles: each vertex is the centre of exactly one angle (prev, vertex, next), and
@@ -17,11 +18,16 @@
 
 #include "lmptype.h"
 
+#include <mpi.h>
+
 #include <cmath>
+#include <type_traits>
+#include <vector>
 
 namespace LAMMPS_NS {
 class Atom;
 class Error;
+class LAMMPS;
 
 namespace DPoly {
 
@@ -72,6 +78,30 @@ namespace DPoly {
   // Preferred length of the ring segment joining local atoms i and j (one of them owned);
   // returns a negative value when i and j are not consecutive vertices of one ring.
   double segment_preferred_length(const Atom *atom, const VertexState &state, int i, int j);
+  // Every rank's records, concatenated in rank order, on every rank: the package's decisions
+  // that must not depend on the number of ranks (ring checks, contact counts, bond breaking) are
+  // taken from such whole-system tables.
+  template <typename Record>
+  std::vector<Record> gather_on_all_ranks(std::vector<Record> mine, MPI_Comm world)
+  {
+    static_assert(std::is_trivially_copyable<Record>::value, "records travel as bytes");
+    int nprocs = 1;
+    MPI_Comm_size(world, &nprocs);
+    int nbytes = (int) (mine.size() * sizeof(Record));
+    std::vector<int> counts(nprocs), displs(nprocs, 0);
+    MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+    std::vector<Record> all((displs.back() + counts.back()) / sizeof(Record));
+    MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
+                   MPI_BYTE, world);
+    return all;
+  }
+
+  // Collective, after bonds or atoms changed between runs. Special::build() communicates
+  // irregularly and drops the ghost atoms; the minimizer's clean-up still checks bonds against
+  // ghosts, so they come back as a run's set-up would bring them (periodic wrap, exchange,
+  // borders).
+  void rebuild_special_and_ghosts(LAMMPS *lmp);
 }    // namespace DPoly
 }    // namespace LAMMPS_NS
 

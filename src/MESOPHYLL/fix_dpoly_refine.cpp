@@ -10,7 +10,6 @@
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
-#include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -246,23 +245,22 @@ void FixDPolyRefine::rewire_topology(const std::vector<Split> &splits)
     const int i = atom->map(tag);
     return (i >= 0 && i < nlocal) ? i : -1;
   };
-  auto add_bond = [&](int i, int type, tagint partner) {
-    if (atom->num_bond[i] == atom->bond_per_atom)
+  // the next free slot in atom i's list of bonds or angles ('what'), or an error naming the room
+  auto next_slot = [&](int i, int *count, int capacity, const char *what) {
+    if (count[i] == capacity)
       error->one(FLERR,
-                 "Fix dpoly/refine: no room for another bond on atom {}; reserve more with "
-                 "extra/bond/per/atom",
-                 atom->tag[i]);
-    const int m = atom->num_bond[i]++;
+                 "Fix dpoly/refine: no room for another {} on atom {}; reserve more with "
+                 "extra/{}/per/atom",
+                 what, atom->tag[i], what);
+    return count[i]++;
+  };
+  auto add_bond = [&](int i, int type, tagint partner) {
+    const int m = next_slot(i, atom->num_bond, atom->bond_per_atom, "bond");
     atom->bond_type[i][m] = type;
     atom->bond_atom[i][m] = partner;
   };
   auto add_angle = [&](int i, int type, tagint a1, tagint a2, tagint a3) {
-    if (atom->num_angle[i] == atom->angle_per_atom)
-      error->one(FLERR,
-                 "Fix dpoly/refine: no room for another angle on atom {}; reserve more with "
-                 "extra/angle/per/atom",
-                 atom->tag[i]);
-    const int m = atom->num_angle[i]++;
+    const int m = next_slot(i, atom->num_angle, atom->angle_per_atom, "angle");
     atom->angle_type[i][m] = type;
     atom->angle_atom1[i][m] = a1;
     atom->angle_atom2[i][m] = a2;

@@ -98,10 +98,10 @@ FixMesophyllBreak::decide(const std::vector<AdhesiveBond> &bonds)
     if (b.distance <= b.contact) continue;    // compressed or touching: tension only
     const double z = adhesion->contact_number(counts, b.cell1, b.cell2);
     const double energy =
-        DPoly::adhesion_law(adhesion->stiffness(b.type), z, b.distance, b.contact).energy;
+        DPoly::adhesion_law(adhesion->type_stiffness(b.type), z, b.distance, b.contact).energy;
     // the law depends on r/s only: the barrier is its energy at r/s = threshold
     const double barrier =
-        DPoly::adhesion_law(adhesion->stiffness(b.type), z, threshold, 1.0).energy;
+        DPoly::adhesion_law(adhesion->type_stiffness(b.type), z, threshold, 1.0).energy;
     bool breaks = false;
     int stochastic = 0;
     if (energy >= barrier)

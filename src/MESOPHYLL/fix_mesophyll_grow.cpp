@@ -9,7 +9,6 @@
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
-#include "dpoly_gather.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
