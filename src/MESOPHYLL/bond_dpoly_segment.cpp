@@ -71,11 +71,8 @@ void BondDPolySegment::compute(int eflag, int vflag)
 
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
   double **x = atom->x;
-  double **f = atom->f;
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
   double ebond = 0.0;
 
   for (int n = 0; n < nbondlist; n++) {
@@ -97,17 +94,7 @@ void BondDPolySegment::compute(int eflag, int vflag)
     const double fbond = law.fpair;
     if (eflag) ebond = law.energy;
 
-    if (newton_bond || i1 < nlocal) {
-      f[i1][0] += delx * fbond;
-      f[i1][1] += dely * fbond;
-      f[i1][2] += delz * fbond;
-    }
-    if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
-    }
-    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    add_bond_force(i1, i2, ebond, fbond, delx, dely, delz);
   }
 }
 

@@ -96,12 +96,9 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
 
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
   double **x = atom->x;
-  double **f = atom->f;
   tagint *molecule = atom->molecule;
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
 
   for (int n = 0; n < nbondlist; n++) {
     const int i1 = bondlist[n][0];
@@ -125,17 +122,7 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
     const double fbond = law.fpair;
     const double ebond = eflag ? law.energy : 0.0;
 
-    if (newton_bond || i1 < nlocal) {
-      f[i1][0] += delx * fbond;
-      f[i1][1] += dely * fbond;
-      f[i1][2] += delz * fbond;
-    }
-    if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
-    }
-    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    add_bond_force(i1, i2, ebond, fbond, delx, dely, delz);
   }
 }
 

@@ -100,9 +100,8 @@ std::vector<double> ComputeDPolyTissue::patch_areas()
     if (!(atom->mask[i] & groupbit)) continue;
     const int c = cells->cell_index(atom->molecule[i]);
     if (c < 0) continue;
-    const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
-    if (j < 0)
-      error->one(FLERR, "Compute dpoly/tissue: ring neighbour of vertex {} missing", atom->tag[i]);
+    const int j =
+        DPoly::closest_neighbour(lmp, i, DPoly::ring_links(atom, i).next, "Compute dpoly/tissue");
     double xi[3], xj[3], pi[2], pj[2];
     domain->unmap(x[i], atom->image[i], xi);
     xj[0] = xi[0] + x[j][0] - x[i][0];

@@ -45,13 +45,8 @@ void ComputeDPolyVertex::compute_peratom()
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     if (links.count != 1) continue;    // not a ring vertex
-    const int jp = domain->closest_image(i, atom->map(links.prev));
-    const int jn = domain->closest_image(i, atom->map(links.next));
-    if (jp < 0 || jn < 0)
-      error->one(FLERR,
-                 "Compute dpoly/vertex: a ring neighbour of vertex {} is missing; increase "
-                 "the communication cutoff",
-                 atom->tag[i]);
+    const int jp = DPoly::closest_neighbour(lmp, i, links.prev, "Compute dpoly/vertex");
+    const int jn = DPoly::closest_neighbour(lmp, i, links.next, "Compute dpoly/vertex");
     const double in[2] = {x[i][0] - x[jp][0], x[i][1] - x[jp][1]};
     const double out[2] = {x[jn][0] - x[i][0], x[jn][1] - x[i][1]};
     values[i][0] = DPoly::turning_angle(in, out);

@@ -32,6 +32,18 @@ DPoly::RingLinks DPoly::ring_links(const Atom *atom, int i)
   return links;
 }
 
+int DPoly::closest_neighbour(LAMMPS *lmp, int i, tagint neighbour, const char *style)
+{
+  Atom *atom = lmp->atom;
+  const int j = lmp->domain->closest_image(i, atom->map(neighbour));
+  if (j < 0)
+    lmp->error->one(FLERR,
+                    "{}: ring neighbour {} of vertex {} is missing on this rank; increase the "
+                    "communication cutoff (comm_modify cutoff)",
+                    style, neighbour, atom->tag[i]);
+  return j;
+}
+
 static int find_property(Atom *atom, Error *error, const char *style, const char *name)
 {
   int flag, cols, ghost;

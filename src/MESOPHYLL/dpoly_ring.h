@@ -38,6 +38,10 @@ namespace DPoly {
   };
   RingLinks ring_links(const Atom *atom, int i);
 
+  // Local index of the image of atom 'neighbour' closest to local atom i; an error that names
+  // 'style' and both atoms if this rank does not hold it (the communication cutoff is short).
+  int closest_neighbour(LAMMPS *lmp, int i, tagint neighbour, const char *style);
+
   // Pointers to the per-vertex state arrays; fetch again after atoms migrate or arrays grow.
   struct VertexState {
     double *diameter;            // sigma: contact diameter of the vertex disk

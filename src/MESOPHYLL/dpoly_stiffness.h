@@ -14,6 +14,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "utils.h"
 
@@ -88,6 +89,27 @@ namespace DPoly {
 
    protected:
     double *stiffness;    // per type, from 1
+
+    // bond styles: the central force fpair (x1 - x2) on atom 1 and its opposite on atom 2, where
+    // this rank holds them, with the energy and virial
+    void add_bond_force(int i1, int i2, double energy, double fpair, double delx, double dely,
+                        double delz)
+    {
+      double **f = this->atom->f;
+      const int nlocal = this->atom->nlocal, newton_bond = this->force->newton_bond;
+      if (newton_bond || i1 < nlocal) {
+        f[i1][0] += delx * fpair;
+        f[i1][1] += dely * fpair;
+        f[i1][2] += delz * fpair;
+      }
+      if (newton_bond || i2 < nlocal) {
+        f[i2][0] -= delx * fpair;
+        f[i2][1] -= dely * fpair;
+        f[i2][2] -= delz * fpair;
+      }
+      if (this->evflag)
+        this->ev_tally(i1, i2, nlocal, newton_bond, energy, fpair, delx, dely, delz);
+    }
 
    private:
     std::string label, name;

@@ -360,13 +360,8 @@ void FixDPolyCells::measure_cells()
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
-    const int jp = domain->closest_image(i, atom->map(links.prev));
-    const int jn = domain->closest_image(i, atom->map(links.next));
-    if (jp < 0 || jn < 0)
-      error->one(FLERR,
-                 "Fix dpoly/cells: a ring neighbour of vertex {} is missing on this rank; "
-                 "increase the communication cutoff (comm_modify cutoff)",
-                 atom->tag[i]);
+    const int jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
+    const int jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
       error->one(FLERR,

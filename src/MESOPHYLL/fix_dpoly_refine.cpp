@@ -105,10 +105,7 @@ std::vector<FixDPolyRefine::Split> FixDPolyRefine::find_long_segments()
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     if (links.count != 1) continue;
-    const int j = domain->closest_image(i, atom->map(links.next));
-    if (j < 0)
-      error->one(FLERR, "Fix dpoly/refine: ring neighbour {} of vertex {} missing", links.next,
-                 atom->tag[i]);
+    const int j = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/refine");
     const double length = std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]);
     if (length <= radii * 0.25 * (state.diameter[i] + state.diameter[j])) continue;
     if (void_only && !(adhesion.void_facing(atom->tag[i]) && adhesion.void_facing(links.next)))

@@ -109,9 +109,8 @@ int FixMesophyllGrow::act()
   std::vector<VertexGrowth> mine;
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
-    if (j < 0)
-      error->one(FLERR, "Fix mesophyll/grow: ring neighbour of vertex {} missing", atom->tag[i]);
+    const int j =
+        DPoly::closest_neighbour(lmp, i, DPoly::ring_links(atom, i).next, "Fix mesophyll/grow");
     mine.push_back(
         {atom->tag[i], std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]), state.preferred_angle[i]});
   }
