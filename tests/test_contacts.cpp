@@ -323,18 +323,7 @@ TEST(Breaking, RestartGivesTheSameLaterBreaks)
 // ---------------------------------------------------------------------------------------
 // Bad input (one rank: some of these are per-atom errors)
 
-class BadContacts : public ::testing::Test {
- protected:
-  void SetUp() override
-  {
-    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
-  }
-  static std::string error_of(const std::string &commands)
-  {
-    LammpsSession s;
-    return s.try_run(commands);
-  }
-};
+class BadContacts : public ErrorTest {};
 
 TEST_F(BadContacts, Settings)
 {

@@ -186,16 +186,13 @@ TEST(Growth, ParallelRunMatchesSerialRun)
     EXPECT_EQ(parallel->gather(name, 1), serial->gather(name, 1)) << name;
 }
 
-class BadGrowth : public ::testing::Test {
+class BadGrowth : public ErrorTest {
  protected:
-  void SetUp() override
-  {
-    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
-  }
+  // the error of one fix command on a small tissue
   static std::string error_of(const std::string &fix_line)
   {
-    LammpsSession s;
-    return s.try_run(contact_commands(octagon_and_square()) + fix_line + "\nrun 0 post no");
+    return ErrorTest::error_of(contact_commands(octagon_and_square()) + fix_line +
+                               "\nrun 0 post no");
   }
 };
 

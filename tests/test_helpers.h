@@ -4,6 +4,8 @@
 
 #include "lammps_session.h"
 
+#include "gtest/gtest.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -224,6 +226,31 @@ inline std::string resume_commands(const std::string &restart)
       "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
       "comm_modify cutoff 3.0\nfix cells all dpoly/cells eps_a 1.0\n";
 }
+
+// Fixture of the bad-input tests: they run on one rank, as some errors are per-atom ones.
+class ErrorTest : public ::testing::Test {
+ protected:
+  void SetUp() override
+  {
+    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  }
+  // the error text of running 'commands' ("" if they run)
+  static std::string error_of(const std::string &commands)
+  {
+    LammpsSession s;
+    return s.try_run(commands);
+  }
+};
+
+// The same commands on all ranks and on this rank alone, for the tests that compare the two.
+struct ParallelAndSerial {
+  LammpsSession parallel, serial;
+  explicit ParallelAndSerial(const std::string &commands) : serial(self_comm())
+  {
+    parallel.run(commands);
+    serial.run(commands);
+  }
+};
 
 }    // namespace test
 

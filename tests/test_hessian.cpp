@@ -54,9 +54,8 @@ TEST(Hessian, SameOnAnyNumberOfRanks)
   const std::string commands = contact_commands(data_file("overlapping.data")) +
       "adhere_cells all 2\nchange_box all x scale 1.03 y scale 1.03 remap\n"
       "compute hessian all dpoly/hessian\nrun 0 post no";
-  LammpsSession parallel, serial(self_comm());
-  parallel.run(commands);
-  serial.run(commands);
+  ParallelAndSerial runs(commands);
+  LammpsSession &parallel = runs.parallel, &serial = runs.serial;
   const int ndof = 2 * serial.natoms();
   EXPECT_EQ(parallel.global_array("hessian", ndof, ndof),
             serial.global_array("hessian", ndof, ndof));

@@ -165,9 +165,8 @@ TEST(Refine, SameOnAnyNumberOfRanks)
   const std::string commands = contact_commands(data_file("overlapping.data")) +
       "set group all d_sigma 0.02\nfix refine all dpoly/refine runs yes void no\n"
       "run 0\nrun 0\n";
-  LammpsSession parallel, serial(self_comm());
-  parallel.run(commands);
-  serial.run(commands);
+  ParallelAndSerial runs(commands);
+  LammpsSession &parallel = runs.parallel, &serial = runs.serial;
   ASSERT_EQ(parallel.natoms(), serial.natoms());
   for (const char *name : {"x", "d_l0", "d_theta0", "d_sigma"}) {
     const int count = std::string(name) == "x" ? 3 : 1;
