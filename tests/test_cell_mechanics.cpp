@@ -381,17 +381,14 @@ TEST_F(BadInput, RingOfTwoVertices)
 
 TEST_F(BadInput, BadCoefficientsAndKeywords)
 {
-  const std::string base = setup_commands(square_data(CCW_ANGLES));
-  EXPECT_THAT(error_of(base + "bond_coeff 1 -2"), HasSubstr("eps_l must be >= 0, got -2"));
-  EXPECT_THAT(error_of(base + "bond_coeff 1 1 2"), HasSubstr("takes one coefficient"));
-  EXPECT_THAT(error_of(base + "angle_coeff 1 -0.1"), HasSubstr("eps_b must be >= 0, got -0.1"));
-  EXPECT_THAT(error_of(base + "fix more all dpoly/cells eps_a -3"),
-              HasSubstr("eps_a must be >= 0, got -3"));
-  EXPECT_THAT(error_of(base + "fix more all dpoly/cells stiff 3"), HasSubstr("keyword: stiff"));
-  EXPECT_THAT(error_of(base + "fix more all dpoly/cells\nrun 0"),
-              HasSubstr("Only one fix dpoly/cells"));
-  EXPECT_THAT(error_of(base + "fix_modify cells energy no\nrun 0"),
-              HasSubstr("must count in both"));
+  expect_errors(setup_commands(square_data(CCW_ANGLES)),
+                {{"bond_coeff 1 -2", "eps_l must be >= 0, got -2"},
+                 {"bond_coeff 1 1 2", "takes one coefficient"},
+                 {"angle_coeff 1 -0.1", "eps_b must be >= 0, got -0.1"},
+                 {"fix more all dpoly/cells eps_a -3", "eps_a must be >= 0, got -3"},
+                 {"fix more all dpoly/cells stiff 3", "keyword: stiff"},
+                 {"fix more all dpoly/cells\nrun 0", "Only one fix dpoly/cells"},
+                 {"fix_modify cells energy no\nrun 0", "must count in both"}});
 }
 
 TEST_F(BadInput, BoxRelaxNeedsLineSearchAndPeriodicBox)

@@ -331,17 +331,13 @@ TEST_F(BadContacts, Settings)
   std::string cmds = contact_commands(data);
   cmds.replace(cmds.find("z bonds"), 7, "z neighbours");
   EXPECT_THAT(error_of(cmds), HasSubstr("z must be 'bonds' or 'cells', got 'neighbours'"));
-  const std::string base = contact_commands(data);
-  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 beta 0"),
-              HasSubstr("beta must be > 0, got 0"));
-  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 threshold 1"),
-              HasSubstr("must be > 1, got 1"));
-  EXPECT_THAT(error_of(base + "fix b all mesophyll/break -5"),
-              HasSubstr("seed must be > 0, got -5"));
-  EXPECT_THAT(error_of(base + "fix b all mesophyll/break 5 gamma 2"), HasSubstr("keyword: gamma"));
-  EXPECT_THAT(error_of(base + "pair_coeff * * -1"), HasSubstr("eps_c must be >= 0, got -1"));
-  EXPECT_THAT(error_of(base + "bond_coeff 2 mesophyll/adhesion -1"),
-              HasSubstr("eps_c must be >= 0, got -1"));
+  expect_errors(contact_commands(data),
+                {{"fix b all mesophyll/break 5 beta 0", "beta must be > 0, got 0"},
+                 {"fix b all mesophyll/break 5 threshold 1", "must be > 1, got 1"},
+                 {"fix b all mesophyll/break -5", "seed must be > 0, got -5"},
+                 {"fix b all mesophyll/break 5 gamma 2", "keyword: gamma"},
+                 {"pair_coeff * * -1", "eps_c must be >= 0, got -1"},
+                 {"bond_coeff 2 mesophyll/adhesion -1", "eps_c must be >= 0, got -1"}});
 }
 
 TEST_F(BadContacts, AdhesiveBondInsideOneCell)
@@ -357,12 +353,10 @@ TEST_F(BadContacts, AdhesiveBondInsideOneCell)
 TEST_F(BadContacts, AdhereCellsRefusesNonsense)
 {
   const std::string overlapping = contact_commands(data_file("overlapping.data"));
-  EXPECT_THAT(error_of(overlapping + "adhere_cells all 3"),
-              HasSubstr("bond type 3 is not between 1 and 2"));
-  EXPECT_THAT(error_of(overlapping + "adhere_cells all 1"),
-              HasSubstr("bond type 1 is not a bond type of"));
-  EXPECT_THAT(error_of(overlapping + "adhere_cells nogroup 2"),
-              HasSubstr("group nogroup does not exist"));
+  expect_errors(overlapping,
+                {{"adhere_cells all 3", "bond type 3 is not between 1 and 2"},
+                 {"adhere_cells all 1", "bond type 1 is not a bond type of"},
+                 {"adhere_cells nogroup 2", "group nogroup does not exist"}});
   Tissue apart;
   apart.cells = {square(10.0, 10.0, 1.0), square(15.0, 10.0, 1.0)};
   EXPECT_THAT(error_of(contact_commands(write_tissue(apart, "apart.data")) + "adhere_cells all 2"),

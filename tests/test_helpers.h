@@ -4,6 +4,7 @@
 
 #include "lammps_session.h"
 
+#include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
 #include <algorithm>
@@ -239,6 +240,13 @@ class ErrorTest : public ::testing::Test {
   {
     LammpsSession s;
     return s.try_run(commands);
+  }
+  // for each (commands, error): base + commands fails with a message that holds error
+  static void expect_errors(const std::string &base,
+                            const std::vector<std::pair<std::string, std::string>> &cases)
+  {
+    for (const auto &c : cases)
+      EXPECT_THAT(error_of(base + c.first), ::testing::HasSubstr(c.second)) << c.first;
   }
 };
 
