@@ -3,10 +3,16 @@
 // theta0_min, and both calA_max rules. Runs on any number of ranks.
 #include "test_helpers.h"
 
+#include "fix.h"
+#include "lammps.h"
+#include "modify.h"
+
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
+#include <cstring>
 #include <memory>
+#include <vector>
 
 using ::testing::HasSubstr;
 
@@ -229,4 +235,33 @@ TEST_F(BadGrowth, NeedsTheCells)
   cmds.replace(cmds.find(" f_cells"), 8, "");
   const std::string msg = s.try_run(cmds + "fix g all mesophyll/grow\nrun 0 post no");
   EXPECT_THAT(msg, HasSubstr("needs fix dpoly/cells"));
+}
+
+// A stage's restart record carries its format version and its number of values, so that a record
+// of another format is refused with a message instead of being read as numbers.
+TEST_F(BadGrowth, RestartRecordOfAnotherFormatIsRefused)
+{
+  LammpsSession s;
+  s.run(contact_commands(octagon_and_square()) + "fix g all mesophyll/grow box fixed\n");
+  auto *lmp = static_cast<LAMMPS_NS::LAMMPS *>(s.lammps_handle());
+  LAMMPS_NS::Fix *grow = lmp->modify->get_fix_by_id("g");
+  ASSERT_NE(grow, nullptr);
+  auto record = [](int version, int count) {
+    std::vector<char> buf(2 * sizeof(int) + 3 * sizeof(double), 0);
+    const int header[2] = {version, count};
+    memcpy(buf.data(), header, sizeof(header));
+    return buf;
+  };
+  for (const auto &header : {std::make_pair(7, 3), std::make_pair(1, 2)}) {
+    std::vector<char> buf = record(header.first, header.second);
+    std::string message;
+    try {
+      grow->restart(buf.data());
+    } catch (std::exception &e) {
+      message = e.what();
+    }
+    EXPECT_THAT(message, HasSubstr("holds state this version cannot read")) << header.first;
+  }
+  std::vector<char> good = record(1, 3);
+  EXPECT_NO_THROW(grow->restart(good.data())) << "version 1 with its 3 values is read";
 }
