@@ -265,3 +265,15 @@ TEST_F(BadGrowth, RestartRecordOfAnotherFormatIsRefused)
   std::vector<char> good = record(1, 3);
   EXPECT_NO_THROW(grow->restart(good.data())) << "version 1 with its 3 values is read";
 }
+
+// The hub finds its stages at every use: a stage removed between runs, with 'run pre no' (which
+// skips init()), is not called (the sanitizer build sees a use after free if it were)
+TEST(Growth, StageRemovedBetweenRunsIsNotCalled)
+{
+  LammpsSession s;
+  s.run(contact_commands(octagon_and_square()) +
+        "fix g all mesophyll/grow box fixed runs yes\nrun 0 post no\n");
+  const double a0 = s.gather("d_a0", 1)[0];
+  s.run("unfix g\nrun 0 pre no post no\n");
+  EXPECT_EQ(s.gather("d_a0", 1)[0], a0) << "no growth after the fix is gone";
+}

@@ -6,13 +6,11 @@
 #include "angle_dpoly_bending.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "domain.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "force.h"
 #include "math_const.h"
-#include "memory.h"
 #include "neighbor.h"
 
 #include <cmath>

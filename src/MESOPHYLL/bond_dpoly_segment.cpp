@@ -7,13 +7,10 @@
 
 #include "atom.h"
 #include "atom_vec.h"
-#include "comm.h"
 #include "domain.h"
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
-#include "force.h"
-#include "memory.h"
 #include "neighbor.h"
 
 #include <algorithm>

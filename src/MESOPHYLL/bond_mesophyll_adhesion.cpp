@@ -13,7 +13,6 @@
 #include "error.h"
 #include "fix_dpoly_cells.h"
 #include "force.h"
-#include "memory.h"
 #include "neighbor.h"
 
 #include <algorithm>
@@ -51,7 +50,7 @@ void BondMesophyllAdhesion::settings(int narg, char **arg)
   }
 }
 
-BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const char *who)
+BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const std::string &who)
 {
   auto *adhesion =
       dynamic_cast<BondMesophyllAdhesion *>(lmp->force->bond_match("mesophyll/adhesion"));

@@ -17,6 +17,7 @@ BondStyle(mesophyll/adhesion,BondMesophyllAdhesion);
 #include "dpoly_ring.h"
 #include "dpoly_stiffness.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -40,7 +41,7 @@ class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly
   void born_matrix(int, double, int, int, double &, double &) override;
 
   // The style of this LAMMPS instance (alone or in hybrid); an error names 'who' if none.
-  static BondMesophyllAdhesion *find(class LAMMPS *lmp, const char *who);
+  static BondMesophyllAdhesion *find(class LAMMPS *lmp, const std::string &who);
 
   // Collective: every adhesive bond of the system with its current stretch, sorted by IDs.
   std::vector<DPoly::AdhesiveBond> gather_bonds();

@@ -241,9 +241,20 @@ void ComputeDPolyHessian::init()
   FixDPolyCells::find(lmp, "Compute dpoly/hessian");
   vertex_state.find(atom, error, "Compute dpoly/hessian");
   if (domain->triclinic) error->all(FLERR, "Compute dpoly/hessian needs an orthogonal box");
+  // every term must give its second derivatives (a bond type of no style has no term)
+  for (int type = 1; type <= atom->nbondtypes; type++) {
+    const Bond *style = force->bond ? bond_style_of(force, type) : nullptr;
+    if (style && !style->born_matrix_enable)
+      error->all(FLERR,
+                 "Compute dpoly/hessian: the bond style of bond type {} has no born_matrix()",
+                 type);
+  }
+  const auto *bending = dynamic_cast<AngleDPolyBending *>(force->angle_match("dpoly/bending"));
+  for (int type = 1; type <= atom->nangletypes; type++)
+    if (!bending || !bending->setflag[type])
+      error->all(FLERR, "Compute dpoly/hessian: angle type {} is not of angle_style dpoly/bending",
+                 type);
 }
-
-/* ---------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
    global array: the Hessian, 2N x 2N, rows and columns in atom-ID order, x then y of each atom
@@ -348,10 +359,7 @@ std::vector<double> ComputeDPolyHessian::assemble()
       const tagint partner = atom->bond_atom[i][m];
       if (type <= 0 || (!force->newton_bond && partner < tag[i])) continue;
       Bond *style = bond_style_of(force, type);
-      if (!style || !style->born_matrix_enable)
-        error->one(FLERR,
-                   "Compute dpoly/hessian: the bond style of bond type {} has no born_matrix()",
-                   type);
+      if (!style) continue;    // bond_style hybrid with 'none' for this type: no term
       const tagint a = std::min(tag[i], partner), b = std::max(tag[i], partner);
       double d[2], first, second;
       positions.difference(a, b, d);
@@ -386,10 +394,6 @@ std::vector<double> ComputeDPolyHessian::assemble()
     for (int m = 0; m < atom->num_angle[i]; m++) {
       const int type = atom->angle_type[i][m];
       if (type <= 0 || atom->angle_atom2[i][m] != tag[i]) continue;
-      if (!bending || !bending->setflag[type])
-        error->one(FLERR,
-                   "Compute dpoly/hessian: angle type {} is not of angle_style dpoly/bending",
-                   type);
       const tagint p = atom->angle_atom1[i][m], n = atom->angle_atom3[i][m];
       double d1[2], d2[2];
       positions.difference(p, tag[i], d1);

@@ -6,7 +6,6 @@
 #include "compute_dpoly_vertex.h"
 
 #include "atom.h"
-#include "domain.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "memory.h"

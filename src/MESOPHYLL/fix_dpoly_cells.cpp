@@ -69,9 +69,7 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
 FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 {
   auto hubs = lmp->modify->get_fix_by_style("^dpoly/cells$");
-  if (hubs.empty())
-    lmp->error->all(FLERR, "{} needs fix dpoly/cells, which keeps the cells and their contacts",
-                    who);
+  if (hubs.empty()) lmp->error->all(FLERR, "{} needs fix dpoly/cells, which keeps the cells", who);
   return dynamic_cast<FixDPolyCells *>(hubs.front());
 }
 
@@ -101,8 +99,14 @@ void FixDPolyCells::init()
                "Fix dpoly/cells {}: the area term must count in both energy and virial; "
                "do not use fix_modify energy no or virial no with it",
                id);
+  find_stages();
+}
 
-  stages.clear();
+// the stage fixes in the order they act; found again at every use, as 'unfix' between runs
+// (with 'run pre no', which skips init()) may have deleted one
+std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
+{
+  std::vector<FixDPolyStage *> stages;
   for (Fix *fix : modify->get_fix_list())
     if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) {
       stage->attach(this);
@@ -112,6 +116,7 @@ void FixDPolyCells::init()
                    [](const FixDPolyStage *a, const FixDPolyStage *b) {
                      return a->stage() < b->stage();
                    });
+  return stages;
 }
 
 // before the first force evaluation of a run, so that every style sees current cells
@@ -151,7 +156,7 @@ void FixDPolyCells::post_force(int vflag)
 void FixDPolyCells::post_run()
 {
   int changed = FixDPolyStage::NOTHING;
-  for (FixDPolyStage *stage : stages) {
+  for (FixDPolyStage *stage : find_stages()) {
     if (!stage->acts_after(update->whichflag)) continue;
     const int change = stage->act();
     if (change != FixDPolyStage::NOTHING) DPoly::rebuild_special_and_ghosts(lmp);

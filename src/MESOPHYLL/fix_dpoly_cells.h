@@ -80,7 +80,6 @@ class FixDPolyCells : public Fix {
   std::unordered_map<tagint, int> sparse_index;    // otherwise
   std::unordered_map<tagint, RingNeighbours> rings;
   std::vector<std::vector<tagint>> ring_order;
-  std::vector<class FixDPolyStage *> stages;    // in the order they act
   std::vector<int> vertex_counts;
   std::vector<double> preferred_areas, areas, perimeters, area_slopes;    // area_slope = dU/da
 
@@ -88,6 +87,7 @@ class FixDPolyCells : public Fix {
   std::vector<double> to_prev, to_next;
   std::vector<double> unwrapped;    // forward-communicated positions, for the image check
 
+  std::vector<class FixDPolyStage *> find_stages();
   void gather_rings();
   void check_ring_images();
   void measure_cells();

@@ -27,7 +27,7 @@ class FixDPolyCheck : public FixDPolyStage {
   double compute_vector(int) override;
 
  private:
-  double target_pressure;    // P0; <= 0: no pressure check
+  double target_pressure;    // P0 (negative: a tension); 0: no pressure check
   double pressure_tolerance;
   int stop_on_failure;
   bigint minima;

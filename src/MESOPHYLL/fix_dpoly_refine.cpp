@@ -180,7 +180,7 @@ void FixDPolyRefine::insert_vertices(const std::vector<Split> &splits)
   for (const Split &s : splits) {
     const int i = atom->map(s.first);
     if (i < 0 || i >= atom->nlocal) continue;
-    const int j = domain->closest_image(i, atom->map(s.second));
+    const int j = DPoly::closest_neighbour(lmp, i, s.second, "Fix dpoly/refine");
     NewVertex v;
     v.tag = s.added;
     v.molecule = atom->molecule[i];
