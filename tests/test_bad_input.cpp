@@ -468,10 +468,12 @@ std::vector<Case> cases()
   return c;
 }
 
-// LAMMPS's message without the source location it appends
+// LAMMPS's message without its "ERROR: ", the source location and the input line it appends
 std::string without_location(const std::string &message)
 {
-  return std::regex_replace(message, std::regex(R"( \([^()]*\.(cpp|h):[0-9]+\)\s*$)"), "");
+  std::string text = message.substr(0, message.find("\nLast input line:"));
+  if (text.rfind("ERROR: ", 0) == 0) text = text.substr(7);
+  return std::regex_replace(text, std::regex(R"( \([^()]*\.(cpp|h):[0-9]+\)\s*$)"), "");
 }
 
 struct Result {
