@@ -69,7 +69,7 @@ void AdhereCells::command(int narg, char **arg)
 
   // first pass: which bonds each owned atom will store, so that overflow is a clean error
   std::vector<std::vector<tagint>> partners(atom->nlocal);
-  bigint found_local = 0, cells_local = 0;
+  bigint found_local = 0, cells_local = 0, already_local = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
@@ -86,17 +86,27 @@ void AdhereCells::command(int narg, char **arg)
       for (int m = 0; m < atom->num_bond[i]; m++)
         if (atom->bond_atom[i][m] == tag[j] && adhesion->is_adhesive_type(atom->bond_type[i][m]))
           bonded = true;
-      if (bonded) continue;
+      if (bonded) {
+        if (tag[i] < tag[j]) already_local++;
+        continue;
+      }
       if (tag[i] < tag[j]) found_local++;
       if (!newton_bond || tag[i] < tag[j]) partners[i].push_back(tag[j]);
     }
   }
 
-  bigint cells_total = 0, found = 0;
+  bigint cells_total = 0, found = 0, already = 0;
   MPI_Allreduce(&cells_local, &cells_total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   MPI_Allreduce(&found_local, &found, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&already_local, &already, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (cells_total == 0)
     error->all(FLERR, "adhere_cells: group {} holds no vertex with a molecule ID", arg[0]);
+  if (found == 0 && already > 0)
+    error->all(FLERR,
+               "adhere_cells: all {} overlapping pairs of vertices of different cells in group {} "
+               "are already bonded (adhere_cells ran before?); there is nothing to add: run it "
+               "once per tissue",
+               already, arg[0]);
   if (found == 0)
     error->all(FLERR, "adhere_cells: no vertices of different cells overlap in group {}", arg[0]);
 

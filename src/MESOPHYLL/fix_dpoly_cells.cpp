@@ -7,6 +7,7 @@
 
 #include "atom.h"
 #include "atom_vec.h"
+#include "bond.h"
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
@@ -14,7 +15,9 @@
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
+#include "force.h"
 #include "group.h"
+#include "math_const.h"
 #include "min.h"
 #include "modify.h"
 #include "update.h"
@@ -31,8 +34,10 @@ namespace {
 // What one rank tells the others about each of its vertices when the rings are checked.
 struct VertexRecord {
   tagint tag, molecule, prev, next;
+  tagint stray_segment;    // partner of a dpoly/segment bond that is no ring segment (0: none)
   int centred_angles;
-  double diameter, preferred_length, preferred_area;
+  int bonds_to_next, bonds_to_prev;    // dpoly/segment bonds stored on this vertex
+  double diameter, preferred_length, preferred_angle, preferred_area;
 };
 }    // namespace
 
@@ -109,6 +114,14 @@ std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
   std::vector<FixDPolyStage *> stages;
   for (Fix *fix : modify->get_fix_list())
     if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) {
+      // a stage acts on the hub's cells (rings, adhesive bonds, contact numbers); a stage on
+      // another group would see ring neighbours and bonds outside its group
+      if (stage->igroup != igroup)
+        error->all(FLERR,
+                   "Fix {} {} is defined on group {}, but fix dpoly/cells {} keeps the cells of "
+                   "group {}: a stage acts on all the hub's cells; define it on group {}",
+                   stage->style, stage->id, group->names[stage->igroup], id, group->names[igroup],
+                   group->names[igroup]);
       stage->attach(this);
       stages.push_back(stage);
     }
@@ -178,6 +191,7 @@ void FixDPolyCells::refresh_cells()
   check_ring_images();
   if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
   measure_cells();
+  check_finite_terms();
   for (int c = 0; c < ncells(); c++)
     if (areas[c] <= 0.0)
       error->all(FLERR,
@@ -186,15 +200,99 @@ void FixDPolyCells::refresh_cells()
                  cell_ids[c], areas[c]);
 }
 
+/* ----------------------------------------------------------------------
+   collective: a preferred area or length far below the actual one makes the strain's square
+   overflow (pe = inf, forces nan) without any value being invalid by itself
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::check_finite_terms()
+{
+  for (int c = 0; c < ncells(); c++)
+    if (!std::isfinite(DPoly::area_law(1.0, areas[c], preferred_areas[c]).energy))
+      error->all(FLERR,
+                 "Fix dpoly/cells: cell {} has a0 = {} for an area of {:.8g}: its area term "
+                 "(a/a0 - 1)^2 is not finite; give a0 a value of the order of the cell's area",
+                 cell_ids[c], preferred_areas[c], areas[c]);
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/cells");
+  tagint worst = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double r = std::hypot(to_next[2 * i], to_next[2 * i + 1]);
+    if (!std::isfinite(DPoly::segment_law(1.0, r, state.preferred_length[i]).energy))
+      worst = std::max(worst, atom->tag[i]);
+  }
+  tagint worst_any = 0;
+  MPI_Allreduce(&worst, &worst_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (!worst_any) return;
+  double values[2] = {0.0, 0.0}, values_any[2];
+  const int i = atom->map(worst_any);
+  if (worst == worst_any && i >= 0 && i < atom->nlocal) {
+    values[0] = state.preferred_length[i];
+    values[1] = std::hypot(to_next[2 * i], to_next[2 * i + 1]);
+  }
+  MPI_Allreduce(values, values_any, 2, MPI_DOUBLE, MPI_SUM, world);
+  error->all(FLERR,
+             "Fix dpoly/cells: vertex {} has l0 = {} for a segment of length {:.8g}: its length "
+             "term (r/l0 - 1)^2 is not finite; give l0 a value of the order of the segment",
+             worst_any, values_any[0], values_any[1]);
+}
+
 void FixDPolyCells::gather_rings()
 {
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/cells");
+  // bond types of bond_style dpoly/segment (alone or in hybrid): its sub-style has their coeffs
+  Bond *segment_style = force->bond_match("dpoly/segment");
+  auto is_segment_type = [&](int type) {
+    return segment_style && segment_style->allocated && type > 0 && type <= atom->nbondtypes &&
+        segment_style->setflag[type];
+  };
   std::vector<VertexRecord> mine;
+  tagint outside = 0, outside_molecule = 0;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
-    mine.push_back({atom->tag[i], atom->molecule[i], links.prev, links.next, links.count,
-                    state.diameter[i], state.preferred_length[i], state.preferred_area[i]});
+    if (!(atom->mask[i] & groupbit)) {
+      if (links.count > 0 && atom->tag[i] > outside) {
+        outside = atom->tag[i];
+        outside_molecule = atom->molecule[i];
+      }
+      continue;
+    }
+    VertexRecord v{atom->tag[i],
+                   atom->molecule[i],
+                   links.prev,
+                   links.next,
+                   0,
+                   links.count,
+                   0,
+                   0,
+                   state.diameter[i],
+                   state.preferred_length[i],
+                   state.preferred_angle[i],
+                   state.preferred_area[i]};
+    if (atom->avec->bonds_allow)
+      for (int m = 0; m < atom->num_bond[i]; m++) {
+        if (!is_segment_type(atom->bond_type[i][m])) continue;
+        const tagint partner = atom->bond_atom[i][m];
+        if (partner == links.next)
+          v.bonds_to_next++;
+        else if (partner == links.prev)
+          v.bonds_to_prev++;
+        else if (!v.stray_segment)
+          v.stray_segment = partner;
+      }
+    mine.push_back(v);
+  }
+  tagint outside_any = 0;
+  MPI_Allreduce(&outside, &outside_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (outside_any) {
+    tagint molecule = (outside == outside_any) ? outside_molecule : 0, molecule_any = 0;
+    MPI_Allreduce(&molecule, &molecule_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+    error->all(FLERR,
+               "Fix dpoly/cells {}: vertex {} of molecule {} is the centre of a ring angle but "
+               "not in group {}; the hub must hold every cell (rings, segments and adhesive "
+               "bonds reach across cells): define fix dpoly/cells on a group of all ring "
+               "vertices, usually all",
+               id, outside_any, molecule_any, group->names[igroup]);
   }
 
   // the whole ring table on every rank, so every rank reaches the same verdict
@@ -214,15 +312,28 @@ void FixDPolyCells::gather_rings()
                  "Fix dpoly/cells: vertex {} has molecule ID {}; each cell must be a "
                  "molecule with ID > 0",
                  v.tag, v.molecule);
-    if (!(v.diameter > 0.0))
-      error->all(FLERR, "Fix dpoly/cells: vertex {} has sigma = {}; it must be > 0", v.tag,
-                 v.diameter);
-    if (!(v.preferred_length > 0.0))
-      error->all(FLERR, "Fix dpoly/cells: vertex {} has l0 = {}; it must be > 0", v.tag,
-                 v.preferred_length);
-    if (!(v.preferred_area > 0.0))
-      error->all(FLERR, "Fix dpoly/cells: vertex {} has a0 = {}; it must be > 0", v.tag,
-                 v.preferred_area);
+    // NaN fails every comparison and inf passes every '> 0': test for finite values first
+    const char *hint = "set it in the Vertices section of the data file or with the set command";
+    if (!(std::isfinite(v.diameter) && v.diameter > 0.0))
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} has sigma = {}; it must be finite and > 0: {} "
+                 "(the vertex is in cell {})",
+                 v.tag, v.diameter, hint, v.molecule);
+    if (!(std::isfinite(v.preferred_length) && v.preferred_length > 0.0))
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} has l0 = {}; it must be finite and > 0: {} "
+                 "(the vertex is in cell {})",
+                 v.tag, v.preferred_length, hint, v.molecule);
+    if (!(std::isfinite(v.preferred_area) && v.preferred_area > 0.0))
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} has a0 = {}; it must be finite and > 0: {} "
+                 "(the vertex is in cell {})",
+                 v.tag, v.preferred_area, hint, v.molecule);
+    if (!(v.preferred_angle > -MathConst::MY_PI && v.preferred_angle <= MathConst::MY_PI))
+      error->all(FLERR,
+                 "Fix dpoly/cells: vertex {} has theta0 = {}; a turning angle must be in "
+                 "(-pi, pi] (radians): {} (the vertex is in cell {})",
+                 v.tag, v.preferred_angle, hint, v.molecule);
     by_tag[v.tag] = &v;
   }
 
@@ -272,6 +383,33 @@ void FixDPolyCells::gather_rings()
                  cell_ids[c], start->tag, steps, count);
     vertex_counts[c] = count;
     preferred_areas[c] = start->preferred_area;
+  }
+
+  // every ring segment needs exactly one dpoly/segment bond, or its term vanishes or counts
+  // twice; with newton_bond on a bond is stored once, on either atom, with off on both
+  if (segment_style) {
+    for (const auto &v : all)
+      if (v.stray_segment)
+        error->all(FLERR,
+                   "Fix dpoly/cells: dpoly/segment bond {}-{} is not a segment of a ring: its "
+                   "atoms must be consecutive vertices (prev, vertex, next) of the angle "
+                   "centred on one of them; remove it or give it a bond type of another style",
+                   std::min(v.tag, v.stray_segment), std::max(v.tag, v.stray_segment));
+    for (const auto &v : all) {
+      const int count = force->newton_bond ? v.bonds_to_next + by_tag[v.next]->bonds_to_prev
+                                           : v.bonds_to_next;
+      if (count == 0)
+        error->all(FLERR,
+                   "Fix dpoly/cells: ring segment {}-{} of cell {} has no dpoly/segment bond, so "
+                   "it has no length term; add the bond {} {} to the Bonds section",
+                   v.tag, v.next, v.molecule, v.tag, v.next);
+      if (count > 1)
+        error->all(FLERR,
+                   "Fix dpoly/cells: ring segment {}-{} of cell {} has {} dpoly/segment bonds, so "
+                   "its length term counts {} times; keep exactly one bond per segment in the "
+                   "Bonds section",
+                   v.tag, v.next, v.molecule, count, count);
+    }
   }
 
   // molecule ID -> cell: a plain table when the IDs are dense, as they usually are

@@ -90,6 +90,7 @@ class FixDPolyCells : public Fix {
   std::vector<class FixDPolyStage *> find_stages();
   void gather_rings();
   void check_ring_images();
+  void check_finite_terms();
   void measure_cells();
   void apply_area_forces(int vflag);
 };

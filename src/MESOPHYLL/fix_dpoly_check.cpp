@@ -67,12 +67,17 @@ int FixDPolyCheck::check()
   const bool converged = (stop == Min::ETOL || stop == Min::FTOL || stop == Min::ZEROFORCE);
   const double force_norm = sqrt(min->fnorm_sqr());
 
-  double pressure_error = 0.0;
+  double pressure_error = 0.0, pressure_value = 0.0;
   if (target_pressure != 0.0) {
     Compute *pressure = modify->get_compute_by_id("thermo_press");
     if (!pressure) error->all(FLERR, "Fix dpoly/check: no thermo_press compute to measure P");
-    pressure_error = fabs(pressure->compute_scalar() - target_pressure) / fabs(target_pressure);
+    pressure_value = pressure->compute_scalar();
+    pressure_error = fabs(pressure_value - target_pressure) / fabs(target_pressure);
   }
+  // nan or inf in the energy means the state is meaningless, whatever else holds (a minimizer
+  // always tallies the global energy, so thermo_pe can be read at its last step)
+  Compute *pe = modify->get_compute_by_id("thermo_pe");
+  const double energy = pe ? pe->compute_scalar() : 0.0;
 
   int inverted = 0;
   tagint first_inverted = 0;
@@ -93,9 +98,14 @@ int FixDPolyCheck::check()
   last[6] = min->neval;
 
   std::string problems;
+  if (!std::isfinite(energy) || !std::isfinite(force_norm))
+    problems +=
+        fmt::format("; the energy pe = {} or the force norm {} is not finite", energy, force_norm);
+  if (target_pressure != 0.0 && !std::isfinite(pressure_value))
+    problems += fmt::format("; the pressure P = {} is not finite", pressure_value);
   if (!converged)
     problems += fmt::format("; the minimizer stopped without converging ({})", min->stopstr);
-  if (pressure_error > pressure_tolerance)
+  if (std::isfinite(pressure_error) && pressure_error > pressure_tolerance)
     problems +=
         fmt::format("; |P - P0|/P0 = {:.3g} exceeds {:.3g}", pressure_error, pressure_tolerance);
   if (inverted)
@@ -115,7 +125,8 @@ int FixDPolyCheck::check()
       fmt::format("Fix dpoly/check: minimum {} at step {}{}", minima, update->ntimestep, problems);
   if (stop_on_failure) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
-  return (!converged) + (pressure_error > pressure_tolerance) + (inverted > 0) + (tangled > 0);
+  return (!converged) + !(pressure_error <= pressure_tolerance) + (inverted > 0) + (tangled > 0) +
+      !(std::isfinite(energy) && std::isfinite(force_norm));
 }
 
 /* ----------------------------------------------------------------------

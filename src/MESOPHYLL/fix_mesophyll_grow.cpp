@@ -47,9 +47,22 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix mesophyll/grow c_L must be in [0, 1], got {}", value);
     } else if (strcmp(key, "c_B") == 0)
       c_bending = number(0.0, false);
-    else if (strcmp(key, "theta0_min") == 0)
+    else if (strcmp(key, "theta0_min") == 0) {
       theta0_min = utils::numeric(FLERR, value, false, lmp);
-    else if (strcmp(key, "calA_max") == 0) {
+      // a lower bound for theta0 of void-facing vertices, which growth lowers toward it
+      if (!(theta0_min > -MathConst::MY_PI && theta0_min <= MathConst::MY_PI))
+        error->all(FLERR,
+                   "Fix mesophyll/grow theta0_min must be a turning angle in (-pi, pi] radians "
+                   "(the lower bound of theta0 at void-facing vertices; the paper's is -pi/10), "
+                   "got {}",
+                   value);
+      if (theta0_min > 0.0 && comm->me == 0)
+        error->warning(FLERR,
+                       "Fix mesophyll/grow theta0_min = {} > 0: every void-facing vertex whose "
+                       "theta0 is below it is raised to it (made convex) instead of bounded; "
+                       "use a value <= 0 (the paper's is -pi/10) unless that is meant",
+                       value);
+    } else if (strcmp(key, "calA_max") == 0) {
       shape_max = number(0.0, true);
       shape_max_given = true;
     } else if (strcmp(key, "rules") == 0) {

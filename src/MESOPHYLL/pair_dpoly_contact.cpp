@@ -102,8 +102,34 @@ void PairDPolyContact::init_style()
 
   vertex_state.find(atom, error, "Pair style dpoly/contact");
   const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
+  // the cutoff is the largest sigma: a non-finite one, or one near the box size, would only
+  // show up as LAMMPS's neighbor-bin error, so name the vertex first
+  double limit = -1.0;    // half the shortest periodic box length; none if nothing is periodic
+  if (domain->xperiodic) limit = 0.5 * domain->xprd;
+  if (domain->yperiodic)
+    limit = (limit < 0.0) ? 0.5 * domain->yprd : std::min(limit, 0.5 * domain->yprd);
   double largest = 0.0;
-  for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, state.diameter[i]);
+  tagint bad = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double sigma = state.diameter[i];
+    if (!std::isfinite(sigma) || (limit > 0.0 && sigma >= limit))
+      bad = std::max(bad, atom->tag[i]);
+    else
+      largest = std::max(largest, sigma);
+  }
+  tagint bad_any = 0;
+  MPI_Allreduce(&bad, &bad_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (bad_any) {
+    double value = 0.0, value_any = 0.0;
+    const int i = atom->map(bad_any);
+    if (bad == bad_any && i >= 0 && i < atom->nlocal) value = state.diameter[i];
+    MPI_Allreduce(&value, &value_any, 1, MPI_DOUBLE, MPI_SUM, world);
+    error->all(FLERR,
+               "Pair style dpoly/contact: vertex {} has sigma = {}; its contact diameter (the "
+               "pair cutoff) must be finite and below half the box ({}): check its value in the "
+               "Vertices section of the data file",
+               bad_any, value_any, limit);
+  }
   MPI_Allreduce(&largest, &largest_diameter, 1, MPI_DOUBLE, MPI_MAX, world);
   if (largest_diameter <= 0.0)
     error->all(FLERR, "Pair style dpoly/contact: no vertex has a diameter sigma > 0");

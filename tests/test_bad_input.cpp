@@ -1,0 +1,593 @@
+// Bad input, table-driven: each case is one small change to a valid two-cell tissue (the data
+// file's per-vertex values, its topology, its geometry, a keyword) and the exact error or warning
+// text it must produce. One rank: some of the errors are per-atom errors.
+//
+// The table of doc/stability.md, section "Bad input", is written by this binary:
+//   MESOPHYLL_STABILITY_DOC=doc/stability.md build/tests/test_bad_input
+// (run from the source tree) replaces the table between its two marker lines with the cases and
+// the messages they got in this run.
+#include "test_helpers.h"
+
+#include "gmock/gmock.h"
+#include "gtest/gtest.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using ::testing::HasSubstr;
+
+using namespace test;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// The valid tissue: two unit squares 0.2 apart, joined by adhesive bonds 2-5 and 3-8.
+// Atoms 1-4 are cell 1, 5-8 cell 2; bonds 1-8 are the ring segments (type 1), 9-10 adhesive.
+
+Tissue two_cells()
+{
+  Tissue t;
+  t.cells = {square(10.0, 10.0, 1.0), square(11.2, 10.0, 1.0)};
+  t.adhesive = {{2, 5}, {3, 8}};
+  return t;
+}
+
+std::string read_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string write_text(const std::string &text, const std::string &name)
+{
+  const std::string path = scratch(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The lines of a data file section, from after its header to the blank line that ends it.
+struct Section {
+  size_t begin, end;    // character offsets of the section's body
+};
+
+Section find_section(const std::string &text, const std::string &header)
+{
+  const size_t at = text.find("\n" + header + "\n");
+  if (at == std::string::npos) throw std::runtime_error("no section " + header);
+  const size_t begin = at + header.size() + 3;    // "\n" header "\n" "\n"
+  size_t end = text.find("\n\n", begin);
+  end = (end == std::string::npos) ? text.size() : end + 1;
+  return {begin, end};
+}
+
+// One line of a section whose first word is 'id', as words.
+std::vector<std::string> words_of(const std::string &line)
+{
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+// A data file's text with a change to one section: 'edit' gets each line's words and returns
+// the words to keep (empty: drop the line); 'extra' lines are appended to the section.
+using LineEdit = std::function<std::vector<std::string>(const std::vector<std::string> &)>;
+
+std::string edit_section(const std::string &text, const std::string &header, const LineEdit &edit,
+                         const std::vector<std::string> &extra = {})
+{
+  const Section s = find_section(text, header);
+  std::istringstream body(text.substr(s.begin, s.end - s.begin));
+  std::string out;
+  for (std::string line; std::getline(body, line);) {
+    if (line.empty()) continue;
+    const std::vector<std::string> words = edit(words_of(line));
+    if (words.empty()) continue;
+    for (size_t k = 0; k < words.size(); k++) out += (k ? " " : "") + words[k];
+    out += "\n";
+  }
+  for (const auto &line : extra) out += line + "\n";
+  return text.substr(0, s.begin) + out + text.substr(s.end);
+}
+
+// Change the count line "<n> <what>" of the header by 'delta'.
+std::string change_count(const std::string &text, const std::string &what, int delta)
+{
+  std::smatch m;
+  const std::regex count("\n([0-9]+) " + what + "\n");
+  if (!std::regex_search(text, m, count)) throw std::runtime_error("no count of " + what);
+  return m.prefix().str() + "\n" + std::to_string(std::stoi(m[1]) + delta) + " " + what + "\n" +
+      m.suffix().str();
+}
+
+// column of the Vertices section: 1 sigma, 2 l0, 3 theta0, 4 a0
+enum VertexColumn { SIGMA = 1, L0 = 2, THETA0 = 3, A0 = 4 };
+
+LineEdit set_word(const std::string &id, int column, const std::string &value)
+{
+  return [=](const std::vector<std::string> &w) {
+    std::vector<std::string> out = w;
+    if (w[0] == id) out[column] = value;
+    return out;
+  };
+}
+
+LineEdit drop_line(const std::string &id)
+{
+  return [=](const std::vector<std::string> &w) {
+    return w[0] == id ? std::vector<std::string>() : w;
+  };
+}
+
+LineEdit keep_lines()
+{
+  return [](const std::vector<std::string> &w) {
+    return w;
+  };
+}
+
+// The valid tissue's data file with one change applied to its text.
+std::string tissue_data(const std::function<std::string(const std::string &)> &change)
+{
+  const std::string text = read_text(write_tissue(two_cells(), "bad_input_base.data"));
+  return write_text(change(text), "bad_input.data");
+}
+
+std::string valid_data()
+{
+  return tissue_data([](const std::string &t) {
+    return t;
+  });
+}
+
+std::string vertex_value(const std::string &id, int column, const std::string &value)
+{
+  return tissue_data([=](const std::string &t) {
+    return edit_section(t, "Vertices", set_word(id, column, value));
+  });
+}
+
+// the whole input of a case on the valid tissue's commands, with 'lines' after them
+std::string on_tissue(const std::string &data, const std::string &lines,
+                      const std::string &before = "")
+{
+  return before + contact_commands(data) + lines;
+}
+
+std::string replaced(std::string text, const std::string &from, const std::string &to)
+{
+  const size_t at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("no '" + from + "' to replace");
+  return text.replace(at, from.size(), to);
+}
+
+const char *RUN = "run 0 post no\n";
+const char *MINIMIZE = "min_style fire\nminimize 0.0 1.0e-8 20 200\n";
+
+// ---------------------------------------------------------------------------------------
+// The table
+
+enum Outcome { ERROR, WARNING };
+
+struct Case {
+  const char *name;      // gtest name
+  const char *area;      // data file, topology, geometry, keywords, stages, check
+  const char *change;    // what the case changes, for the table
+  std::function<std::string()> input;
+  Outcome outcome;
+  std::string message;    // the exact text the error or warning must contain
+};
+
+std::vector<Case> cases()
+{
+  std::vector<Case> c;
+  auto vertex_case = [&](const char *name, const char *change, const std::string &id, int column,
+                         const std::string &value, const std::string &message) {
+    c.push_back({name, "data file", change,
+                 [=]() {
+                   return on_tissue(vertex_value(id, column, value), RUN);
+                 },
+                 ERROR, message});
+  };
+
+  // --- data file: per-vertex values
+  vertex_case("SigmaNegative", "sigma = -1 on vertex 4", "4", SIGMA, "-1",
+              "vertex 4 has sigma = -1; it must be finite and > 0");
+  vertex_case("SigmaZero", "sigma = 0 on vertex 6", "6", SIGMA, "0",
+              "vertex 6 has sigma = 0; it must be finite and > 0");
+  vertex_case("SigmaInf", "sigma = inf on vertex 2", "2", SIGMA, "inf",
+              "Pair style dpoly/contact: vertex 2 has sigma = inf; its contact diameter (the "
+              "pair cutoff) must be finite and below half the box (20)");
+  vertex_case("SigmaHuge", "sigma = 25 on vertex 7 (box 40)", "7", SIGMA, "25",
+              "Pair style dpoly/contact: vertex 7 has sigma = 25; its contact diameter (the "
+              "pair cutoff) must be finite and below half the box (20)");
+  vertex_case("SigmaNan", "sigma = nan on vertex 3", "3", SIGMA, "nan",
+              "Pair style dpoly/contact: vertex 3 has sigma = nan; its contact diameter (the "
+              "pair cutoff) must be finite and below half the box (20)");
+  vertex_case("LengthZero", "l0 = 0 on vertex 2", "2", L0, "0",
+              "vertex 2 has l0 = 0; it must be finite and > 0");
+  vertex_case("LengthNegative", "l0 = -1 on vertex 7", "7", L0, "-1",
+              "vertex 7 has l0 = -1; it must be finite and > 0");
+  vertex_case("LengthInf", "l0 = inf on vertex 1", "1", L0, "inf",
+              "vertex 1 has l0 = inf; it must be finite and > 0");
+  vertex_case("LengthNan", "l0 = nan on vertex 5", "5", L0, "nan",
+              "vertex 5 has l0 = nan; it must be finite and > 0");
+  vertex_case("LengthTiny", "l0 = 1e-300 on vertex 3", "3", L0, "1e-300",
+              "vertex 3 has l0 = 1e-300 for a segment of length 1: its length term (r/l0 - 1)^2 "
+              "is not finite");
+  vertex_case("ThetaNan", "theta0 = nan on vertex 1", "1", THETA0, "nan",
+              "vertex 1 has theta0 = nan; a turning angle must be in (-pi, pi]");
+  vertex_case("ThetaInf", "theta0 = inf on vertex 8", "8", THETA0, "inf",
+              "vertex 8 has theta0 = inf; a turning angle must be in (-pi, pi]");
+  vertex_case("ThetaAbovePi", "theta0 = 4 on vertex 2", "2", THETA0, "4",
+              "vertex 2 has theta0 = 4; a turning angle must be in (-pi, pi]");
+  vertex_case("ThetaBelowMinusPi", "theta0 = -3.5 on vertex 6", "6", THETA0, "-3.5",
+              "vertex 6 has theta0 = -3.5; a turning angle must be in (-pi, pi]");
+  vertex_case("ThetaMinusPi", "theta0 = -pi on vertex 3", "3", THETA0, "-3.141592653589793",
+              "vertex 3 has theta0 = -3.141592653589793; a turning angle must be in "
+              "(-pi, pi]");
+  vertex_case("AreaNegative", "a0 = -0.5 on vertex 3", "3", A0, "-0.5",
+              "vertex 3 has a0 = -0.5; it must be finite and > 0");
+  vertex_case("AreaInf", "a0 = inf on vertex 5", "5", A0, "inf",
+              "vertex 5 has a0 = inf; it must be finite and > 0");
+  vertex_case("AreaNan", "a0 = nan on vertex 1", "1", A0, "nan",
+              "vertex 1 has a0 = nan; it must be finite and > 0");
+  vertex_case("AreaDiffersInCell", "a0 = 2 on vertex 2 only", "2", A0, "2",
+              "cell 1 has different a0 on vertices");
+  c.push_back({"AreaTiny", "data file", "a0 = 1e-300 on every vertex of cell 2",
+               []() {
+                 return on_tissue(valid_data(), "set mol 2 d_a0 1e-300\n" + std::string(RUN));
+               },
+               ERROR,
+               "cell 2 has a0 = 1e-300 for an area of 1: its area term (a/a0 - 1)^2 is not "
+               "finite"});
+  c.push_back({"MoleculeZero", "data file", "vertex 1 in molecule 0",
+               []() {
+                 return on_tissue(tissue_data([](const std::string &t) {
+                                    return edit_section(t, "Atoms # molecular",
+                                                        [](const std::vector<std::string> &w) {
+                                                          std::vector<std::string> out = w;
+                                                          if (w[0] == "1") out[1] = "0";
+                                                          return out;
+                                                        });
+                                  }),
+                                  RUN);
+               },
+               ERROR, "vertex 1 has molecule ID 0"});
+
+  // --- topology
+  auto topology_case = [&](const char *name, const char *change,
+                           const std::function<std::string(const std::string &)> &edit,
+                           const std::string &message, const std::string &before = "") {
+    c.push_back({name, "topology", change,
+                 [=]() {
+                   return on_tissue(tissue_data(edit), RUN, before);
+                 },
+                 ERROR, message});
+  };
+  auto without_bond = [](const std::string &id) {
+    return [=](const std::string &t) {
+      return change_count(edit_section(t, "Bonds", drop_line(id)), "bonds", -1);
+    };
+  };
+  auto with_bond = [](const std::string &line) {
+    return [=](const std::string &t) {
+      return change_count(edit_section(t, "Bonds", keep_lines(), {line}), "bonds", 1);
+    };
+  };
+  const char *MISSING_4_1 =
+      "ring segment 4-1 of cell 1 has no dpoly/segment bond, so it has no length term";
+  const char *TWICE_6_7 =
+      "ring segment 6-7 of cell 2 has 2 dpoly/segment bonds, so its length term counts 2 times";
+  topology_case("SegmentBondMissing", "ring bond 4-1 left out", without_bond("4"), MISSING_4_1);
+  topology_case("SegmentBondMissingNewtonOff", "ring bond 4-1 left out, newton_bond off",
+                without_bond("4"), MISSING_4_1, "newton on off\n");
+  topology_case("SegmentBondTwice", "ring bond 6-7 given twice", with_bond("11 1 6 7"), TWICE_6_7);
+  topology_case("SegmentBondTwiceReversed", "ring bond 6-7 given again as 7-6",
+                with_bond("11 1 7 6"), TWICE_6_7);
+  topology_case("SegmentBondTwiceNewtonOff", "ring bond 6-7 given twice, newton_bond off",
+                with_bond("11 1 6 7"), TWICE_6_7, "newton on off\n");
+  topology_case("SegmentBondAcrossRing", "segment bond 1-3 added across cell 1",
+                with_bond("11 1 1 3"), "dpoly/segment bond 1-3 is not a segment of a ring");
+  topology_case("SegmentBondBetweenCells", "segment-type bond 2-5 between the cells",
+                with_bond("11 1 2 5"), "dpoly/segment bond 2-5 is not a segment of a ring");
+  topology_case("AdhesiveBondInsideCell", "adhesive bond 1-3 inside cell 1", with_bond("11 2 1 3"),
+                "bond 1-3 joins two vertices of cell 1");
+  topology_case(
+      "VertexWithoutAngle", "angle centred on vertex 6 left out",
+      [](const std::string &t) {
+        return change_count(edit_section(t, "Angles", drop_line("6")), "angles", -1);
+      },
+      "vertex 6 is the centre of 0 angles; a ring vertex needs exactly one angle");
+  topology_case(
+      "VertexWithTwoAngles", "a second angle centred on vertex 2",
+      [](const std::string &t) {
+        return change_count(edit_section(t, "Angles", keep_lines(), {"9 1 1 2 4"}), "angles", 1);
+      },
+      "vertex 2 is the centre of 2 angles");
+  topology_case(
+      "RingSplitBetweenCells", "vertex 4 in molecule 2",
+      [](const std::string &t) {
+        return edit_section(t, "Atoms # molecular", [](const std::vector<std::string> &w) {
+          std::vector<std::string> out = w;
+          if (w[0] == "4") out[1] = "2";
+          return out;
+        });
+      },
+      "vertex 4 of cell 2 points to vertex 1 as its next, but that is not a vertex of the same "
+      "ring pointing back to it");
+  topology_case(
+      "ClockwiseRing", "cell 2's angles reversed (clockwise ring)",
+      [](const std::string &t) {
+        return edit_section(t, "Angles", [](const std::vector<std::string> &w) {
+          std::vector<std::string> out = w;
+          if (std::stoi(w[0]) >= 5) std::swap(out[2], out[4]);
+          return out;
+        });
+      },
+      "cell 2 has area -1 <= 0; a ring must run counter-clockwise");
+  c.push_back({"AdhereCellsTwice", "topology", "adhere_cells on a tissue that is already bonded",
+               []() {
+                 return on_tissue(valid_data(), "adhere_cells all 2\n");
+               },
+               ERROR,
+               "adhere_cells: all 2 overlapping pairs of vertices of different cells in group "
+               "all are already bonded (adhere_cells ran before?)"});
+
+  // --- geometry
+  c.push_back({"RingLargerThanHalfTheBox", "geometry", "box shrunk to 1.5 x 1.5 around a cell",
+               []() {
+                 Tissue t;
+                 t.cells = {square(0.1, 0.1, 1.0)};
+                 t.box = 1.5;
+                 t.sigma = 0.2;
+                 return on_tissue(write_tissue(t, "bad_input_small_box.data"), RUN);
+               },
+               ERROR, "the ring is not whole between vertex"});
+  c.push_back({"VerticesCoincide", "geometry", "vertex 2 moved onto vertex 1",
+               []() {
+                 return on_tissue(valid_data(), "set atom 2 x 10 y 10\n" + std::string(RUN));
+               },
+               ERROR, "vertices 1 and 2 coincide"});
+
+  // --- the stages and the hub: groups
+  auto group_case = [&](const char *name, const char *change, const std::string &lines,
+                        const std::string &message) {
+    c.push_back({name, "groups", change,
+                 [=]() {
+                   return on_tissue(valid_data(),
+                                    "group one molecule 1\ngroup none empty\n" + lines + RUN);
+                 },
+                 ERROR, message});
+  };
+  group_case("GrowOnSubgroup", "fix mesophyll/grow on the group of cell 1",
+             "fix grow one mesophyll/grow box fixed\n",
+             "Fix mesophyll/grow grow is defined on group one, but fix dpoly/cells cells keeps "
+             "the cells of group all: a stage acts on all the hub's cells; define it on group "
+             "all");
+  group_case("GrowOnEmptyGroup", "fix mesophyll/grow on an empty group",
+             "fix grow none mesophyll/grow box fixed\n",
+             "Fix mesophyll/grow grow is defined on group none, but fix dpoly/cells cells");
+  group_case("BreakOnSubgroup", "fix mesophyll/break on the group of cell 1",
+             "fix break one mesophyll/break 5\n",
+             "Fix mesophyll/break break is defined on group one, but fix dpoly/cells cells");
+  group_case("CheckOnSubgroup", "fix dpoly/check on the group of cell 1",
+             "fix check one dpoly/check\n",
+             "Fix dpoly/check check is defined on group one, but fix dpoly/cells cells");
+  group_case("RefineOnSubgroup", "fix dpoly/refine on the group of cell 1",
+             "fix refine one dpoly/refine\n",
+             "Fix dpoly/refine refine is defined on group one, but fix dpoly/cells cells");
+  auto hub_group_case = [&](const char *name, const char *change, const std::string &group,
+                            const std::string &break_group, const std::string &message) {
+    c.push_back(
+        {name, "groups", change,
+         [=]() {
+           return replaced(
+               on_tissue(valid_data(),
+                         "fix break " + break_group + " mesophyll/break 5\n" + std::string(RUN)),
+               "fix cells all dpoly/cells",
+               "group one molecule 1\ngroup none empty\nfix cells " + group + " dpoly/cells");
+         },
+         ERROR, message});
+  };
+  hub_group_case("HubOnSubgroup", "fix dpoly/cells and fix mesophyll/break on the group of cell 1",
+                 "one", "one",
+                 "Fix dpoly/cells cells: vertex 8 of molecule 2 is the centre of a ring angle but "
+                 "not in group one; the hub must hold every cell");
+  hub_group_case("HubOnSubgroupBreakOnAll",
+                 "fix dpoly/cells on the group of cell 1, fix mesophyll/break on all", "one", "all",
+                 "Fix mesophyll/break break is defined on group all, but fix dpoly/cells cells "
+                 "keeps the cells of group one");
+  hub_group_case("HubOnEmptyGroup", "fix dpoly/cells and fix mesophyll/break on an empty group",
+                 "none", "none",
+                 "vertex 8 of molecule 2 is the centre of a ring angle but not in group none");
+
+  // --- keywords
+  auto keyword_case = [&](const char *name, const char *change, const std::string &lines,
+                          const std::string &message, Outcome outcome = ERROR) {
+    c.push_back({name, "keywords", change,
+                 [=]() {
+                   return on_tissue(valid_data(), lines + RUN);
+                 },
+                 outcome, message});
+  };
+  keyword_case("ThetaMinAbovePi", "fix mesophyll/grow theta0_min 4",
+               "fix grow all mesophyll/grow box fixed theta0_min 4\n",
+               "Fix mesophyll/grow theta0_min must be a turning angle in (-pi, pi] radians");
+  keyword_case("ThetaMinBelowMinusPi", "fix mesophyll/grow theta0_min -3.2",
+               "fix grow all mesophyll/grow box fixed theta0_min -3.2\n", "got -3.2");
+  keyword_case("ThetaMinPositive", "fix mesophyll/grow theta0_min 0.5",
+               "fix grow all mesophyll/grow box fixed theta0_min 0.5\n",
+               "Fix mesophyll/grow theta0_min = 0.5 > 0: every void-facing vertex whose theta0 "
+               "is below it is raised to it",
+               WARNING);
+  keyword_case("GrowLengthShare", "fix mesophyll/grow c_L 2",
+               "fix grow all mesophyll/grow box fixed c_L 2\n",
+               "Fix mesophyll/grow c_L must be in [0, 1], got 2");
+  keyword_case("GrowNegativeStep", "fix mesophyll/grow delta_a -1",
+               "fix grow all mesophyll/grow box fixed delta_a -1\n",
+               "Fix mesophyll/grow delta_a must be >= 0, got -1");
+  keyword_case("GrowRules", "fix mesophyll/grow rules authors",
+               "fix grow all mesophyll/grow box fixed rules authors\n",
+               "rules must be 'code' or 'paper', got 'authors'");
+  keyword_case("GrowBox", "fix mesophyll/grow box free", "fix grow all mesophyll/grow box free\n",
+               "box must be 'relax' or 'fixed', got 'free'");
+  keyword_case("GrowWithoutBoxRelax", "fix mesophyll/grow without fix box/relax",
+               "fix grow all mesophyll/grow\n", "Fix mesophyll/grow grow needs fix box/relax");
+  keyword_case("CheckTolerance", "fix dpoly/check tolerance 0",
+               "fix check all dpoly/check tolerance 0\n",
+               "Fix dpoly/check tolerance must be > 0, got 0");
+  keyword_case("CheckAction", "fix dpoly/check action stop",
+               "fix check all dpoly/check action stop\n",
+               "action must be 'warn' or 'error', got 'stop'");
+  keyword_case("BreakThreshold", "fix mesophyll/break threshold 0.5",
+               "fix break all mesophyll/break 5 threshold 0.5\n", "must be > 1, got 0.5");
+  keyword_case("RefineCap", "fix dpoly/refine cap 0.5", "fix refine all dpoly/refine cap 0.5\n",
+               "Fix dpoly/refine cap must be >= 1, got 0.5");
+
+  // --- the minimum's check
+  c.push_back({"CheckNonFiniteEnergy", "check",
+               "fix dpoly/check after a minimization whose energy is inf (fix addforce energy)",
+               []() {
+                 return on_tissue(valid_data(),
+                                  "variable big atom 1.0e308*10\nvariable zero atom 0.0\n"
+                                  "fix push all addforce v_zero 0.0 0.0 energy v_big\n"
+                                  "fix_modify push energy yes\n"
+                                  "fix check all dpoly/check action error\n" +
+                                      std::string(MINIMIZE));
+               },
+               ERROR, "the energy pe = inf or the force norm"});
+  return c;
+}
+
+// LAMMPS's message without its "ERROR: ", the source location and the input line it appends
+std::string without_location(const std::string &message)
+{
+  std::string text = message.substr(0, message.find("\nLast input line:"));
+  if (text.rfind("ERROR: ", 0) == 0) text = text.substr(7);
+  return std::regex_replace(text, std::regex(R"( \([^()]*\.(cpp|h):[0-9]+\)\s*$)"), "");
+}
+
+struct Result {
+  std::string error, warnings;
+};
+
+Result run_case(const Case &c)
+{
+  const std::string log = scratch("bad_input.log");
+  std::remove(log.c_str());
+  Result r;
+  {
+    LammpsSession s;
+    r.error = without_location(s.try_run("log " + log + "\n" + c.input()));
+  }
+  std::istringstream in(read_text(log));
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("WARNING: ", 0) == 0) r.warnings += without_location(line.substr(9)) + "\n";
+  return r;
+}
+
+// the table's rows, filled as the cases run
+std::vector<std::vector<std::string>> &table()
+{
+  static std::vector<std::vector<std::string>> rows;
+  return rows;
+}
+
+std::string cell_text(std::string s)
+{
+  for (size_t at = 0; (at = s.find('|', at)) != std::string::npos; at += 2) s.replace(at, 1, "\\|");
+  for (char &ch : s)
+    if (ch == '\n') ch = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+class BadInputCase : public ::testing::TestWithParam<Case> {
+ protected:
+  void SetUp() override
+  {
+    if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  }
+};
+
+TEST_P(BadInputCase, GetsItsMessage)
+{
+  const Case &c = GetParam();
+  const Result r = run_case(c);
+  std::string outcome;
+  if (c.outcome == ERROR) {
+    EXPECT_THAT(r.error, HasSubstr(c.message));
+    outcome = "error: " + r.error;
+  } else {
+    EXPECT_EQ(r.error, "");
+    EXPECT_THAT(r.warnings, HasSubstr(c.message));
+    outcome = "warning: " + r.warnings;
+  }
+  table().push_back({c.name, c.area, c.change, outcome});
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, BadInputCase, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Case> &info) {
+                           return std::string(info.param.name);
+                         });
+
+// The valid tissue itself runs, minimizes and passes the check: the cases are changes of it.
+TEST(BadInputBase, ValidTissueRunsClean)
+{
+  if (world_size() > 1) GTEST_SKIP() << "error tests run on one rank";
+  const Result r = run_case(
+      {"Valid", "", "",
+       []() {
+         return on_tissue(valid_data(), "fix check all dpoly/check\n" + std::string(MINIMIZE));
+       },
+       ERROR, ""});
+  EXPECT_EQ(r.error, "");
+  EXPECT_THAT(r.warnings, ::testing::Not(HasSubstr("FAILED")));
+}
+
+const char *BEGIN_MARK = "<!-- bad-input table: begin (written by tests/test_bad_input.cpp) -->";
+const char *END_MARK = "<!-- bad-input table: end -->";
+
+// After all tests: write the table into doc/stability.md when asked to
+// (MESOPHYLL_STABILITY_DOC), and only from a run of every case.
+class TableWriter : public ::testing::Environment {
+ public:
+  void TearDown() override
+  {
+    const char *doc = getenv("MESOPHYLL_STABILITY_DOC");
+    if (!doc || world_size() > 1) return;
+    if (table().size() != cases().size()) {
+      fprintf(stderr, "bad-input table not written: %zu of %zu cases ran\n", table().size(),
+              cases().size());
+      return;
+    }
+    std::string rows = std::string(BEGIN_MARK) + "\n\n| case | area | change | outcome |\n" +
+        "|---|---|---|---|\n";
+    for (const auto &row : table())
+      rows += "| " + cell_text(row[0]) + " | " + cell_text(row[1]) + " | " + cell_text(row[2]) +
+          " | " + cell_text(row[3]) + " |\n";
+    rows += "\n" + std::string(END_MARK);
+    std::string text = read_text(doc);
+    const size_t begin = text.find(BEGIN_MARK), end = text.find(END_MARK);
+    if (begin == std::string::npos || end == std::string::npos) {
+      fprintf(stderr, "%s has no bad-input table markers\n", doc);
+      return;
+    }
+    text.replace(begin, end + std::string(END_MARK).size() - begin, rows);
+    std::ofstream(doc) << text;
+    fprintf(stderr, "bad-input table of %zu cases written to %s\n", table().size(), doc);
+  }
+};
+
+::testing::Environment *const table_writer = ::testing::AddGlobalTestEnvironment(new TableWriter);
+
+}    // namespace
