@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
 # Runs an example of the package in a scratch copy under the build folder and says where its
 # log and outputs are; draws a development run's PNGs (tools/plot_mesophyll.py).
-#   tools/run-example.sh [--build-dir DIR] [--np N] [--var NAME VALUE ...] [EXAMPLE [INPUT]]
+#   tools/run-example.sh [--build-dir DIR] [--np N] [--var NAME VALUE ...] [--resume] [EXAMPLE [INPUT]]
 # Default: the paper's main run, examples/mesophyll/in.mesophyll, on as many ranks as cores (<= 2).
+# --resume: continue a killed development run in its folder from its newest restart.N*.<step>
+# (in.mesophyll -var resume FILE); give the same --var as the killed run.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir="$here/build"
 np=$(( $(nproc) >= 2 ? 2 : 1 ))
 vars=()
 positional=()
+resume=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir=$(realpath -m "$2"); shift ;;
     --np) np=$2; shift ;;
     --var) vars+=(-var "$2" "$3"); shift 2 ;;
-    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    --resume) resume=yes ;;
+    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
     *) positional+=("$1") ;;
   esac
   shift
@@ -27,9 +31,19 @@ src="$here/examples/$example"
 
 command -v mpirun >/dev/null || np=1
 work="$build_dir/examples/$example"
-rm -rf "$work"; mkdir -p "$work"; cp -rL "$src/." "$work/"
-cd "$work"
 log="log.$(basename "$input" | sed 's/^in\.//')"
+if [ -n "$resume" ]; then
+  # the folder of the killed run as it is; the newest complete restart file in it
+  restart=$(cd "$work" 2>/dev/null && ls -t restart.N*.[0-9]* 2>/dev/null | head -n 1) || true
+  [ -n "$restart" ] || { echo "run-example.sh: no restart.N*.<step> in $work to resume from" >&2; exit 2; }
+  vars+=(-var resume "$restart")
+  log="$log.resumed.${restart##*.}"
+  echo "Resuming $example/$input from $work/$restart"
+  cd "$work"
+else
+  rm -rf "$work"; mkdir -p "$work"; cp -rL "$src/." "$work/"
+  cd "$work"
+fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if [ "$np" -gt 1 ]; then
   mpirun -np "$np" --oversubscribe "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
