@@ -6,6 +6,7 @@
 #include "fix_mesophyll_grow.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_ring.h"
