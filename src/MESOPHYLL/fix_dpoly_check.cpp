@@ -38,14 +38,9 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
       pressure_tolerance = utils::numeric(FLERR, value, false, lmp);
       if (pressure_tolerance <= 0.0)
         error->all(FLERR, "Fix dpoly/check tolerance must be > 0, got {}", value);
-    } else if (strcmp(key, "action") == 0) {
-      if (strcmp(value, "warn") == 0)
-        stop_on_failure = 0;
-      else if (strcmp(value, "error") == 0)
-        stop_on_failure = 1;
-      else
-        error->all(FLERR, "Fix dpoly/check action must be 'warn' or 'error', got '{}'", value);
-    } else
+    } else if (strcmp(key, "action") == 0)
+      stop_on_failure = one_of(key, value, "warn", "error");
+    else
       return false;
     return true;
   });

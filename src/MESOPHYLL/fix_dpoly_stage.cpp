@@ -51,6 +51,14 @@ void FixDPolyStage::parse_keywords(int first, int narg, char **arg, const Keywor
   }
 }
 
+int FixDPolyStage::one_of(const char *key, const char *value, const char *first, const char *second)
+{
+  if (strcmp(value, first) == 0) return 0;
+  if (strcmp(value, second) != 0)
+    error->all(FLERR, "Fix {} {} must be '{}' or '{}', got '{}'", style, key, first, second, value);
+  return 1;
+}
+
 void FixDPolyStage::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;

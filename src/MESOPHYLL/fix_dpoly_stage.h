@@ -48,6 +48,8 @@ class FixDPolyStage : public Fix {
   // know. An odd word or an unknown keyword is an error that names it.
   using KeywordReader = std::function<bool(const char *key, const char *value)>;
   void parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword);
+  // 0 if value is the word 'first', 1 if it is 'second'; otherwise an error naming key and value
+  int one_of(const char *key, const char *value, const char *first, const char *second);
 
   // The global state a stage keeps in restart files, and how it takes it back; restore()
   // returns false if the values cannot be this fix's (their number, for example).

@@ -67,24 +67,15 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
       shape_max = number(0.0, true);
       shape_max_given = true;
     } else if (strcmp(key, "rules") == 0) {
-      if (strcmp(value, "code") == 0) {
-        grow_above_max = 1;
-        if (!shape_max_given) shape_max = 2.5;
-      } else if (strcmp(value, "paper") == 0) {
-        grow_above_max = 0;
-        if (!shape_max_given) shape_max = 3.0;
-      } else
-        error->all(FLERR, "Fix mesophyll/grow rules must be 'code' or 'paper', got '{}'", value);
+      // code: isometric growth above calA_max 2.5; paper: none above 3
+      const bool paper = one_of(key, value, "code", "paper");
+      grow_above_max = paper ? 0 : 1;
+      if (!shape_max_given) shape_max = paper ? 3.0 : 2.5;
     } else if (strcmp(key, "scale_sigma") == 0)
       scale_diameters = utils::logical(FLERR, value, false, lmp);
-    else if (strcmp(key, "box") == 0) {
-      if (strcmp(value, "relax") == 0)
-        need_box_relax = 1;
-      else if (strcmp(value, "fixed") == 0)
-        need_box_relax = 0;
-      else
-        error->all(FLERR, "Fix mesophyll/grow box must be 'relax' or 'fixed', got '{}'", value);
-    } else
+    else if (strcmp(key, "box") == 0)
+      need_box_relax = one_of(key, value, "relax", "fixed") == 0;
+    else
       return false;
     return true;
   });
