@@ -7,6 +7,17 @@
 #define LAMMPS_LIB_MPI 1    // lammps_open() with a communicator
 #include "library.h"
 
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MESOPHYLL_LSAN 1
+#endif
+#elif defined(__SANITIZE_ADDRESS__)
+#define MESOPHYLL_LSAN 1
+#endif
+#ifdef MESOPHYLL_LSAN
+#include <sanitizer/lsan_interface.h>
+#endif
+
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -28,15 +39,28 @@ class LammpsSession {
   // Run one or more lines; throws with LAMMPS's message if one fails.
   void run(const std::string &lines)
   {
-    const std::string message = try_run(lines);
-    if (!message.empty()) throw std::runtime_error("LAMMPS error: " + message);
+    lammps_commands_string(handle, lines.c_str());
+    if (lammps_has_error(handle)) throw std::runtime_error("LAMMPS error: " + last_error());
   }
 
-  // Run lines and return LAMMPS's error message, or "" if they all succeeded.
+  // Run lines and return LAMMPS's error message, or "" if they all succeeded. Input that is
+  // meant to fail goes here: LAMMPS's Input::execute_command() does not delete a command that
+  // stops with an error, so the sanitized build leaves what this input allocates out of its
+  // leak check (run() does not call try_run: all other input stays checked).
   std::string try_run(const std::string &lines)
   {
+#ifdef MESOPHYLL_LSAN
+    __lsan_disable();
+#endif
     lammps_commands_string(handle, lines.c_str());
-    if (!lammps_has_error(handle)) return "";
+#ifdef MESOPHYLL_LSAN
+    __lsan_enable();
+#endif
+    return lammps_has_error(handle) ? last_error() : "";
+  }
+
+  std::string last_error()
+  {
     char buffer[2048];
     lammps_get_last_error_message(handle, buffer, sizeof(buffer));
     return buffer;

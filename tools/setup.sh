@@ -3,7 +3,12 @@
 # Idempotent: a second run only rebuilds what changed (ccache makes a fresh clone fast).
 #
 #   tools/setup.sh [--serial] [--build-dir DIR] [--lammps-source DIR] [--lammps-tarball FILE]
-#                  [--no-install] [--run-example]
+#                  [--no-install] [--run-example] [--sanitize | --sanitize-package]
+#
+# --sanitize builds with AddressSanitizer and UndefinedBehaviorSanitizer (CMake option
+# MESOPHYLL_SANITIZE) in build-sanitize/ (unless --build-dir names another), leaving build/ as is;
+# a fresh one compiles all of LAMMPS again. --sanitize-package instruments only src/MESOPHYLL and
+# the tests (LAMMPS's own objects are the plain build's, from ccache: minutes, not half an hour).
 #
 # LAMMPS's source is taken, in this order, from: --lammps-source (or $LAMMPS_SOURCE_DIR), a
 # tarball named by --lammps-tarball (or $LAMMPS_TARBALL), or the upstream tarball of Debian's
@@ -12,8 +17,10 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build_dir="$here/build"
+build_dir=""
 mpi=ON
+sanitize=OFF
+sanitize_lammps=ON
 install=1
 run_example=0
 lammps_source=${LAMMPS_SOURCE_DIR:-}
@@ -28,11 +35,17 @@ while [ $# -gt 0 ]; do
     --lammps-tarball) lammps_tarball=$2; shift ;;
     --no-install) install=0 ;;
     --run-example) run_example=1 ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    --sanitize) sanitize=ON; sanitize_lammps=ON ;;
+    --sanitize-package) sanitize=ON; sanitize_lammps=OFF ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "setup.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
 done
+
+if [ -z "$build_dir" ]; then
+  if [ "$sanitize" = ON ]; then build_dir="$here/build-sanitize"; else build_dir="$here/build"; fi
+fi
 
 say() { printf '\n== %s\n' "$*"; }
 
@@ -151,8 +164,9 @@ fi
 export CCACHE_BASEDIR="$here" CCACHE_NOHASHDIR=1
 ccache --max-size=4G >/dev/null 2>&1 || true
 
-say "Configuring (LAMMPS in $lammps_dir, MPI $mpi)"
-cmake -S "$here" -B "$build_dir" -G Ninja -DMESOPHYLL_LAMMPS_DIR="$lammps_dir" -DBUILD_MPI="$mpi" >/dev/null
+say "Configuring (LAMMPS in $lammps_dir, MPI $mpi, sanitizers $sanitize)"
+cmake -S "$here" -B "$build_dir" -G Ninja -DMESOPHYLL_LAMMPS_DIR="$lammps_dir" -DBUILD_MPI="$mpi" \
+      -DMESOPHYLL_SANITIZE="$sanitize" -DMESOPHYLL_SANITIZE_LAMMPS="$sanitize_lammps" >/dev/null
 say "Building"
 cmake --build "$build_dir" --parallel "$(nproc)"
 ccache --show-stats 2>/dev/null | grep -Ei 'hit|miss' | head -n 4 || true
