@@ -113,8 +113,10 @@ void MinFireNph::setup_style()
   box_velocity = new double[std::max(nextra_global, 1)];
   box_step = new double[std::max(nextra_global, 1)];
 
+  // FIRE starts at rest, the box too (its velocity was read uninitialized before the first step)
   for (int k = 0; k < nextra_global; k++) {
     box_length[k] = prd[k];
+    box_velocity[k] = box_step[k] = 0.0;
     if (nextra_global == 1) {
       double sum = 0.0;
       for (int d = 0; d < domain->dimension; d++) sum += (prd[d] / prd[0]) * (prd[d] / prd[0]);
