@@ -93,6 +93,11 @@ void DPoly::rebuild_special_and_ghosts(LAMMPS *lmp)
 {
   Special special(lmp);
   special.build();
+  refresh_ghosts(lmp);
+}
+
+void DPoly::refresh_ghosts(LAMMPS *lmp)
+{
   Domain *domain = lmp->domain;
   Atom *atom = lmp->atom;
   if (domain->triclinic) domain->x2lamda(atom->nlocal);

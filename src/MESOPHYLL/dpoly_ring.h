@@ -103,9 +103,11 @@ namespace DPoly {
 
   // Collective, after bonds or atoms changed between runs. Special::build() communicates
   // irregularly and drops the ghost atoms; the minimizer's clean-up still checks bonds against
-  // ghosts, so they come back as a run's set-up would bring them (periodic wrap, exchange,
-  // borders).
+  // ghosts, so they come back as a run's set-up would bring them (refresh_ghosts()).
   void rebuild_special_and_ghosts(LAMMPS *lmp);
+  // Collective: ghost atoms anew, with the owners' current per-vertex state (periodic wrap,
+  // exchange, borders), as a run's set-up brings them.
+  void refresh_ghosts(LAMMPS *lmp);
 }    // namespace DPoly
 }    // namespace LAMMPS_NS
 

@@ -161,8 +161,8 @@ void FixDPolyCells::post_force(int vflag)
 
 /* ----------------------------------------------------------------------
    after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
-   order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt
-   before the next stage reads them; the rings are re-read once, at the end. Min::cleanup()
+   order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt, one
+   that changed per-vertex values (growth) its ghost atoms, before the next stage reads them; the rings are re-read once, at the end. Min::cleanup()
    reads the minimizer's vectors after this, so they must cover the atoms as they are now.
 ------------------------------------------------------------------------- */
 
@@ -172,7 +172,10 @@ void FixDPolyCells::post_run()
   for (FixDPolyStage *stage : find_stages()) {
     if (!stage->acts_after(update->whichflag)) continue;
     const int change = stage->act();
-    if (change != FixDPolyStage::NOTHING) DPoly::rebuild_special_and_ghosts(lmp);
+    if (change & (FixDPolyStage::BONDS | FixDPolyStage::RINGS))
+      DPoly::rebuild_special_and_ghosts(lmp);
+    else if (change & FixDPolyStage::STATE)
+      DPoly::refresh_ghosts(lmp);
     changed |= change;
   }
   if (changed & FixDPolyStage::RINGS) refresh_cells();

@@ -23,7 +23,8 @@ class FixDPolyStage : public Fix {
  public:
   enum Stage { CHECK, BREAK, GROW, REFINE };
   // what act() changed, so that the hub can bring LAMMPS's topology and its cells up to date
-  enum Change { NOTHING = 0, BONDS = 1, RINGS = 2 };
+  // (STATE: per-vertex values, whose ghost copies the next stage may read)
+  enum Change { NOTHING = 0, STATE = 1, BONDS = 2, RINGS = 4 };
 
   // every stage reports what it did as a global, intensive vector of this many values
   FixDPolyStage(class LAMMPS *, int, char **, Stage, int vector_length);

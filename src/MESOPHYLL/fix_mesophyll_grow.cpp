@@ -138,7 +138,7 @@ int FixMesophyllGrow::act()
     state.preferred_area[i] = a0 + delta_a;
   }
   steps++;
-  return NOTHING;    // preferred values change, the topology does not
+  return STATE;    // preferred values and diameters change, the topology does not
 }
 
 void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexGrowth *> &vertex,
