@@ -465,6 +465,17 @@ std::vector<Case> cases()
                                       std::string(MINIMIZE));
                },
                ERROR, "the energy pe = inf or the force norm"});
+  c.push_back({"CheckNonFinitePressure", "check",
+               "fix dpoly/check without 'pressure' after a minimization whose P is nan (velocities "
+               "inf - inf)",
+               []() {
+                 return on_tissue(valid_data(),
+                                  "variable nan equal 1.0e308*10-1.0e308*10\n"
+                                  "velocity all set v_nan 0.0 0.0\n"
+                                  "fix check all dpoly/check action error\n"
+                                  "min_style cg\nminimize 0.0 1.0e-8 20 200\n");    // fire zeroes v
+               },
+               ERROR, "nan is not finite"});
   return c;
 }
 

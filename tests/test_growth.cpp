@@ -277,3 +277,34 @@ TEST(Growth, StageRemovedBetweenRunsIsNotCalled)
   s.run("unfix g\nrun 0 pre no post no\n");
   EXPECT_EQ(s.gather("d_a0", 1)[0], a0) << "no growth after the fix is gone";
 }
+
+// What a value printed after a run whose growth changed the tissue describes does not depend on
+// whether the thermo output evaluated the compute at the run's last step: compute dpoly/tissue
+// gives the tissue before growth acted (the minimum; phi_patch moves with sigma, which growth
+// scales), compute dpoly/hessian the tissue as it is (l0, theta0 and a0 have grown).
+TEST(Growth, ComputesAfterTheRunDoNotDependOnTheThermoOutput)
+{
+  const std::string tissue = contact_commands(octagon_and_square()) +
+      "compute tissue all dpoly/tissue\ncompute hessian all dpoly/hessian modes 4\n";
+  const std::string grow = "fix grow all mesophyll/grow runs yes box fixed\n";
+  auto values_now = [](LammpsSession &s) {
+    return std::vector<double>{s.equal_variable("c_tissue[2]"), s.equal_variable("c_hessian[4]")};
+  };
+  LammpsSession before, grown;
+  before.run(tissue + "run 0 post no\n");
+  const std::vector<double> minimum = values_now(before);
+  grown.run(tissue + grow + "run 0 post no\nunfix grow\nrun 0 post no\n");
+  const std::vector<double> after_growth = values_now(grown);
+  ASSERT_NE(minimum[0], after_growth[0]) << "growth moves phi_patch";
+  ASSERT_NE(minimum[1], after_growth[1]) << "growth moves the Hessian";
+
+  for (const bool in_thermo : {true, false}) {
+    LammpsSession s;
+    s.run(tissue + (in_thermo ? "thermo_style custom step c_tissue[2] c_hessian[4]\n" : "") + grow +
+          "run 0 post no\n");
+    const std::vector<double> printed = values_now(s);
+    EXPECT_EQ(printed[0], minimum[0]) << "phi_patch, compute in thermo: " << in_thermo;
+    EXPECT_NEAR(printed[1], after_growth[1], 1e-12 * std::fabs(after_growth[1]))
+        << "Hessian, compute in thermo: " << in_thermo;
+  }
+}

@@ -13,12 +13,13 @@ ComputeStyle(dpoly/adhesion,ComputeDPolyAdhesion);
 #define LMP_COMPUTE_DPOLY_ADHESION_H
 
 #include "compute.h"
+#include "dpoly_measure.h"
 
 namespace LAMMPS_NS {
 
 // Adhesive bonds as fix dpoly/cells last counted them: per vertex (0 = void-facing), and per
 // cell (cell ID, adhesive bonds, distinct cells bonded to it) as a global array.
-class ComputeDPolyAdhesion : public Compute {
+class ComputeDPolyAdhesion : public Compute, public DPoly::TissueMeasure {
  public:
   ComputeDPolyAdhesion(class LAMMPS *, int, char **);
   ~ComputeDPolyAdhesion() override;
@@ -26,6 +27,8 @@ class ComputeDPolyAdhesion : public Compute {
   void compute_array() override;
   void compute_peratom() override;
   double memory_usage() override;
+  void measure_minimum() override { DPoly::evaluate_global(this); }
+  void forget_values() override { DPoly::forget_peratom(this); }
 
  private:
   class FixDPolyCells *cells;

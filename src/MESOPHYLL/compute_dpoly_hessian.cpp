@@ -288,6 +288,18 @@ void ComputeDPolyHessian::compute_vector()
 }
 
 /* ----------------------------------------------------------------------
+   the stages changed the tissue after the last evaluation: the next one measures the new tissue
+   (a dense Hessian at every minimum would be too costly to take in advance)
+------------------------------------------------------------------------- */
+
+void ComputeDPolyHessian::forget_values()
+{
+  invoked_flag = 0;
+  invoked_scalar = invoked_vector = invoked_array = -1;
+  diagonalized_once = false;
+}
+
+/* ----------------------------------------------------------------------
    eigenvalues on rank 0 (Eigen's dense self-adjoint solver), the lowest to every rank; zero
    modes: |lambda| below the zero level, less the two translations of a periodic tissue
 ------------------------------------------------------------------------- */

@@ -13,6 +13,7 @@ ComputeStyle(dpoly/hessian,ComputeDPolyHessian);
 #define LMP_COMPUTE_DPOLY_HESSIAN_H
 
 #include "compute.h"
+#include "dpoly_measure.h"
 #include "dpoly_ring.h"
 
 #include <vector>
@@ -23,7 +24,7 @@ namespace LAMMPS_NS {
 // segment, bending, contact and adhesion terms) over the vertex positions at fixed box,
 // assembled analytically and diagonalized with Eigen (dense). Gives its lowest eigenvalues and
 // the number of zero modes besides the two global translations.
-class ComputeDPolyHessian : public Compute {
+class ComputeDPolyHessian : public Compute, public DPoly::TissueMeasure {
  public:
   ComputeDPolyHessian(class LAMMPS *, int, char **);
   ~ComputeDPolyHessian() override;
@@ -31,6 +32,7 @@ class ComputeDPolyHessian : public Compute {
   double compute_scalar() override;
   void compute_vector() override;
   void compute_array() override;    // the Hessian itself, on every rank
+  void forget_values() override;
 
  private:
   int nmodes;           // eigenvalues reported

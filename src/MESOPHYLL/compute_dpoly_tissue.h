@@ -13,6 +13,7 @@ ComputeStyle(dpoly/tissue,ComputeDPolyTissue);
 #define LMP_COMPUTE_DPOLY_TISSUE_H
 
 #include "compute.h"
+#include "dpoly_measure.h"
 
 #include <vector>
 
@@ -20,7 +21,7 @@ namespace LAMMPS_NS {
 
 // What the paper reports of a tissue (doc/Howto_mesophyll.rst, "Observables"): packing fractions, shape parameters,
 // contact numbers, void-facing vertices; globally and per cell.
-class ComputeDPolyTissue : public Compute {
+class ComputeDPolyTissue : public Compute, public DPoly::TissueMeasure {
  public:
   ComputeDPolyTissue(class LAMMPS *, int, char **);
   ~ComputeDPolyTissue() override;
@@ -29,6 +30,7 @@ class ComputeDPolyTissue : public Compute {
   void compute_vector() override;
   void compute_array() override;
   double memory_usage() override;
+  void measure_minimum() override { DPoly::evaluate_global(this); }
 
  private:
   class FixDPolyCells *cells;

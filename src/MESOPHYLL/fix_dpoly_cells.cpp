@@ -12,6 +12,7 @@
 #include "domain.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_laws.h"
+#include "dpoly_measure.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
@@ -162,15 +163,24 @@ void FixDPolyCells::post_force(int vflag)
 /* ----------------------------------------------------------------------
    after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
    order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt, one
-   that changed per-vertex values (growth) its ghost atoms, before the next stage reads them; the rings are re-read once, at the end. Min::cleanup()
-   reads the minimizer's vectors after this, so they must cover the atoms as they are now.
+   that changed per-vertex values (growth) its ghost atoms, before the next stage reads them;
+   the rings are re-read once, at the end. Min::cleanup() reads the minimizer's vectors after
+   this, so they must cover the atoms as they are now. The package's computes take the
+   minimum's values first and drop what the stages made stale (dpoly_measure.h).
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::post_run()
 {
+  std::vector<FixDPolyStage *> acting;
+  for (FixDPolyStage *stage : find_stages())
+    if (stage->acts_after(update->whichflag)) acting.push_back(stage);
+  if (acting.empty()) return;
+
+  const std::vector<DPoly::TissueMeasure *> measures = find_measures();
+  for (DPoly::TissueMeasure *measure : measures) measure->measure_minimum();
+
   int changed = FixDPolyStage::NOTHING;
-  for (FixDPolyStage *stage : find_stages()) {
-    if (!stage->acts_after(update->whichflag)) continue;
+  for (FixDPolyStage *stage : acting) {
     const int change = stage->act();
     if (change & (FixDPolyStage::BONDS | FixDPolyStage::RINGS))
       DPoly::rebuild_special_and_ghosts(lmp);
@@ -178,9 +188,19 @@ void FixDPolyCells::post_run()
       DPoly::refresh_ghosts(lmp);
     changed |= change;
   }
+  if (changed == FixDPolyStage::NOTHING) return;
   if (changed & FixDPolyStage::RINGS) refresh_cells();
-  if (changed != FixDPolyStage::NOTHING && update->whichflag == 2)
-    update->minimize->reset_vectors();
+  if (update->whichflag == 2) update->minimize->reset_vectors();
+  for (DPoly::TissueMeasure *measure : measures) measure->forget_values();
+}
+
+// the package's computes, in the order they were defined
+std::vector<DPoly::TissueMeasure *> FixDPolyCells::find_measures()
+{
+  std::vector<DPoly::TissueMeasure *> measures;
+  for (Compute *compute : modify->get_compute_list())
+    if (auto *measure = dynamic_cast<DPoly::TissueMeasure *>(compute)) measures.push_back(measure);
+  return measures;
 }
 
 /* ----------------------------------------------------------------------

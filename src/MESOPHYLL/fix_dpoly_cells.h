@@ -19,6 +19,9 @@ FixStyle(dpoly/cells,FixDPolyCells);
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace DPoly {
+  class TissueMeasure;
+}
 
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
 // counter-clockwise ring), checks them, and adds the per-cell area term
@@ -88,6 +91,7 @@ class FixDPolyCells : public Fix {
   std::vector<double> unwrapped;    // forward-communicated positions, for the image check
 
   std::vector<class FixDPolyStage *> find_stages();
+  std::vector<DPoly::TissueMeasure *> find_measures();
   void gather_rings();
   void check_ring_images();
   void check_finite_terms();

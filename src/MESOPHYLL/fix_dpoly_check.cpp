@@ -62,13 +62,17 @@ int FixDPolyCheck::check()
   const bool converged = (stop == Min::ETOL || stop == Min::FTOL || stop == Min::ZEROFORCE);
   const double force_norm = sqrt(min->fnorm_sqr());
 
+  // P is read whenever the virial was tallied at this step (a minimizer's last step tallies it
+  // for the thermo output), so that a non-finite P is flagged with or without 'pressure'
   double pressure_error = 0.0, pressure_value = 0.0;
-  if (target_pressure != 0.0) {
-    Compute *pressure = modify->get_compute_by_id("thermo_press");
-    if (!pressure) error->all(FLERR, "Fix dpoly/check: no thermo_press compute to measure P");
-    pressure_value = pressure->compute_scalar();
+  Compute *pressure = modify->get_compute_by_id("thermo_press");
+  if (target_pressure != 0.0 && !pressure)
+    error->all(FLERR, "Fix dpoly/check: no thermo_press compute to measure P");
+  const bool pressure_known =
+      pressure && (target_pressure != 0.0 || update->vflag_global == update->ntimestep);
+  if (pressure_known) pressure_value = pressure->compute_scalar();
+  if (target_pressure != 0.0)
     pressure_error = fabs(pressure_value - target_pressure) / fabs(target_pressure);
-  }
   // nan or inf in the energy means the state is meaningless, whatever else holds (a minimizer
   // always tallies the global energy, so thermo_pe can be read at its last step)
   Compute *pe = modify->get_compute_by_id("thermo_pe");
@@ -96,7 +100,7 @@ int FixDPolyCheck::check()
   if (!std::isfinite(energy) || !std::isfinite(force_norm))
     problems +=
         fmt::format("; the energy pe = {} or the force norm {} is not finite", energy, force_norm);
-  if (target_pressure != 0.0 && !std::isfinite(pressure_value))
+  if (!std::isfinite(pressure_value))
     problems += fmt::format("; the pressure P = {} is not finite", pressure_value);
   if (!converged)
     problems += fmt::format("; the minimizer stopped without converging ({})", min->stopstr);
@@ -121,7 +125,7 @@ int FixDPolyCheck::check()
   if (stop_on_failure) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
   return (!converged) + !(pressure_error <= pressure_tolerance) + (inverted > 0) + (tangled > 0) +
-      !(std::isfinite(energy) && std::isfinite(force_norm));
+      !(std::isfinite(energy) && std::isfinite(force_norm)) + !std::isfinite(pressure_value);
 }
 
 /* ----------------------------------------------------------------------
