@@ -74,22 +74,41 @@ def reference_log(example, name, np):
     return logs[-1] if logs else None
 
 
+def add_launcher_arguments(parser):
+    """The rank count and MPI launcher options, shared with resume.py."""
+    parser.add_argument("--np", type=int, default=1)
+    parser.add_argument("--mpirun", default="mpirun",
+                        help="MPI launcher (CMake: MPIEXEC_EXECUTABLE)")
+    parser.add_argument("--numproc-flag", default="-np",
+                        help="its rank-count flag (MPIEXEC_NUMPROC_FLAG)")
+    parser.add_argument("--preflags", default=None,
+                        help="flags before the program (MPIEXEC_PREFLAGS and "
+                             "MESOPHYLL_MPIEXEC_FLAGS; default --oversubscribe, with Open MPI's "
+                             "run-as-root variables)")
+    parser.add_argument("--postflags", default="",
+                        help="flags after the program (MPIEXEC_POSTFLAGS)")
+
+
+def launch(args, lmp_arguments):
+    """The command line and environment that run lmp with lmp_arguments on args.np ranks."""
+    env = dict(os.environ)
+    if args.np == 1:
+        return [args.lmp] + lmp_arguments, env
+    if args.preflags is None:    # run by hand: Open MPI's needs, as root on few cores
+        preflags = ["--oversubscribe"]
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    else:
+        preflags = shlex.split(args.preflags)
+    return (shlex.split(args.mpirun) + [args.numproc_flag, str(args.np)] + preflags + [args.lmp]
+            + shlex.split(args.postflags) + lmp_arguments), env
+
+
 def run_example(args, workdir, log_name):
     shutil.copytree(args.example, workdir, dirs_exist_ok=True)
     command = ["-in", args.input, "-log", log_name, "-screen", "none"]
     for name, value in args.var:
         command += ["-var", name, value]
-    env = dict(os.environ)
-    if args.np > 1:
-        if args.preflags is None:    # run by hand: Open MPI's needs, as root on few cores
-            preflags = ["--oversubscribe"]
-            env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-        else:
-            preflags = shlex.split(args.preflags)
-        command = (shlex.split(args.mpirun) + [args.numproc_flag, str(args.np)] + preflags
-                   + [args.lmp] + shlex.split(args.postflags) + command)
-    else:
-        command = [args.lmp] + command
+    command, env = launch(args, command)
     result = subprocess.run(command, cwd=workdir, env=env)
     if result.returncode != 0:
         sys.exit(f"regression: {' '.join(command)} failed with exit code {result.returncode}")
@@ -101,14 +120,7 @@ def main():
     p.add_argument("--lmp", required=True)
     p.add_argument("--example", required=True)
     p.add_argument("--input", required=True)
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun", help="MPI launcher (CMake: MPIEXEC_EXECUTABLE)")
-    p.add_argument("--numproc-flag", default="-np",
-                   help="its rank-count flag (MPIEXEC_NUMPROC_FLAG)")
-    p.add_argument("--preflags", default=None,
-                   help="flags before the program (MPIEXEC_PREFLAGS and MESOPHYLL_MPIEXEC_FLAGS; "
-                        "default --oversubscribe, with Open MPI's run-as-root variables)")
-    p.add_argument("--postflags", default="", help="flags after the program (MPIEXEC_POSTFLAGS)")
+    add_launcher_arguments(p)
     p.add_argument("--rtol", type=float, default=1e-8)
     p.add_argument("--atol", type=float, default=1e-12)
     p.add_argument("--tolerance", action="append", default=[], metavar="COLUMN=RTOL,ATOL",

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A killed development run, resumed from its last restart file, ends as the uninterrupted one.
 
-    resume.py --lmp BUILD/lmp --example examples/mesophyll [--steps 4] [--cells 16]
+    resume.py --lmp BUILD/lmp --example examples/mesophyll [--steps 4] [--cells 16] [--np N]
+              [--mpirun CMD] [--numproc-flag FLAG] [--preflags FLAGS] [--postflags FLAGS]
 
 Runs examples/NAME/in.mesophyll (16 cells, 4 growth steps, a restart file every step) three
 ways in scratch copies of the example folder:
@@ -18,7 +19,9 @@ The growth table growth.N16.txt and the dump cells.N16.dump of the last two must
 straight one's: the same growth steps and snapshots, bond counts, contact numbers and vertex
 ids exactly, the floating-point columns and vertex positions to round-off (a restart changes
 the summation order; FIRE's iteration count may differ by a few steps and is not compared).
-Serial lmp (the kill goes to the lmp process itself). Standard library only.
+With --np N > 1 the runs are launched as regression.py launches them (CMake's MPIEXEC_*
+order); the kill then goes to the launcher's whole process group, so that no rank outlives it.
+Standard library only.
 """
 import argparse
 import glob
@@ -30,6 +33,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from regression import add_launcher_arguments, launch    # noqa: E402
+
 GROWTH_COLUMNS = "step P phi phi_patch calA z bonds dphi_plus iterations".split()
 # (rtol, atol) per column; None: must be equal; "skip": not compared
 TOLERANCES = {"step": None, "P": (1e-9, 0.0), "phi": (0.0, 2e-6), "phi_patch": (0.0, 2e-6),
@@ -39,14 +45,13 @@ POSITION_ATOL = 1e-6
 
 
 def lmp_command(args, extra):
-    command = [args.lmp, "-in", "in.mesophyll", "-screen", "none", "-var", "N", str(args.cells),
-               "-var", "steps", str(args.steps), "-var", "restart_every", "1"]
-    return command + extra
+    return launch(args, ["-in", "in.mesophyll", "-screen", "none", "-var", "N", str(args.cells),
+                         "-var", "steps", str(args.steps), "-var", "restart_every", "1"] + extra)
 
 
 def run(args, folder, log, extra=()):
-    command = lmp_command(args, ["-log", log] + list(extra))
-    result = subprocess.run(command, cwd=folder, timeout=args.timeout)
+    command, env = lmp_command(args, ["-log", log] + list(extra))
+    result = subprocess.run(command, cwd=folder, env=env, timeout=args.timeout)
     if result.returncode != 0:
         sys.exit(f"resume: {' '.join(command)} in {folder} failed with exit code "
                  f"{result.returncode}")
@@ -125,6 +130,7 @@ def main():
     p.add_argument("--cells", type=int, default=16)
     p.add_argument("--steps", type=int, default=4)
     p.add_argument("--timeout", type=float, default=300, help="seconds per lmp run")
+    add_launcher_arguments(p)
     args = p.parse_args()
     args.lmp = os.path.abspath(args.lmp)
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
@@ -138,21 +144,17 @@ def main():
         for folder in (straight, killed):
             shutil.copytree(args.example, folder)    # follows the parameter file's symlink
 
-        # the killed run: SIGKILL to lmp once its first restart file is there
+        # the killed run: SIGKILL to lmp (or its launcher) once its first restart file is there
         first = os.path.join(killed, f"restart.N{cells}.1")
-        proc = subprocess.Popen(lmp_command(args, ["-log", "log.killed"]), cwd=killed,
-                                start_new_session=True)
+        command, env = lmp_command(args, ["-log", "log.killed"])
+        proc = subprocess.Popen(command, cwd=killed, env=env, start_new_session=True)
         deadline = time.time() + args.timeout
         while not os.path.exists(first) and proc.poll() is None and time.time() < deadline:
             time.sleep(0.005)
         still_running = proc.poll() is None
-        if still_running:
-            os.kill(proc.pid, signal.SIGKILL)
-        proc.wait()
-        try:    # what the MPI library may have started beside lmp, in lmp's own session
+        if still_running:    # lmp, or the launcher and its ranks, in their own process group
             os.killpg(proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        proc.wait()
         if not os.path.exists(first):
             sys.exit(f"resume: the run ended (exit code {proc.returncode}) or timed out "
                      f"before writing {first}")
