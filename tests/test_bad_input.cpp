@@ -351,7 +351,9 @@ std::vector<Case> cases()
                  t.sigma = 0.2;
                  return on_tissue(write_tissue(t, "bad_input_small_box.data"), RUN);
                },
-               ERROR, "the ring is not whole between vertex"});
+               ERROR,
+               "at step 0, ring segment 4-1 of cell 1 is 1 long (1 in y), not shorter than half "
+               "the box length in y (0.75)"});
   c.push_back({"VerticesCoincide", "geometry", "vertex 2 moved onto vertex 1",
                []() {
                  return on_tissue(valid_data(), "set atom 2 x 10 y 10\n" + std::string(RUN));

@@ -36,6 +36,8 @@ class FixDPolyCells : public Fix {
   void min_setup(int) override;
   void pre_force(int) override {}
   void min_pre_force(int) override {}
+  void pre_neighbor() override;
+  void min_pre_neighbor() override;
   void post_force(int) override;
   void min_post_force(int) override;
   void post_run() override;
@@ -85,11 +87,13 @@ class FixDPolyCells : public Fix {
 
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
-  std::vector<double> unwrapped;    // forward-communicated positions, for the image check
+  std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions, for ring checks
 
   std::vector<class FixDPolyStage *> find_stages();
   void gather_rings();
-  void check_ring_images();
+  void share_unwrapped_positions();
+  void check_segments();
+  void check_cell_extents();
   void check_finite_terms();
   void measure_cells();
   void apply_area_forces(int vflag);
