@@ -42,7 +42,7 @@ struct VertexRecord {
 }    // namespace
 
 FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0)
+    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0), checked_atoms(-1)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -193,6 +193,7 @@ void FixDPolyCells::post_run()
       DPoly::rebuild_special_and_ghosts(lmp);
     else if (change & FixDPolyStage::STATE)
       DPoly::refresh_ghosts(lmp);
+    if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
     changed |= change;
   }
   if (changed & FixDPolyStage::RINGS) refresh_cells();
@@ -472,18 +473,22 @@ void FixDPolyCells::share_unwrapped_positions()
    They part when a segment is not shorter than half the box (another image is nearer), when it
    is longer than the ghost cutoff (its own image may be no ghost of this rank), or when image
    flags do not keep a ring whole. Ghosts only change at reneighbouring, so a check at run start
-   and at every reneighbouring sees a wrong image before any force uses it; only a segment that
-   outgrows half the box between two of them acts on a wrong image until the next one.
+   and at every reneighbouring sees a wrong image before any force uses it. A segment that
+   outgrows half the box between two reneighbourings makes another image the nearest one, which
+   measure_cells() notices against the images recorded here.
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::check_segments()
 {
   double **x = atom->x;
   const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd);
+  checked_next.assign(atom->nlocal, -1);
+  checked_atoms = atom->nlocal + atom->nghost;
   tagint broken = 0;    // largest vertex ID whose next vertex is not where its ring continues
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
+    checked_next[i] = j;
     bool whole = j >= 0;
     for (int d = 0; d < 2 && whole; d++)
       whole = fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) <= tolerance;
@@ -592,7 +597,10 @@ void FixDPolyCells::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   collective: area (shoelace on unwrapped positions) and perimeter of every cell
+   collective: area (shoelace on unwrapped positions) and perimeter of every cell. A nearest
+   image of a next vertex other than the one of the last ring check (the ghosts are the same
+   until the next reneighbouring) means a segment just passed half the box: the ring check
+   names it before any step is taken with the wrong image.
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::measure_cells()
@@ -601,13 +609,17 @@ void FixDPolyCells::measure_cells()
   double **x = atom->x;
   to_prev.assign(2 * (size_t) nlocal, 0.0);
   to_next.assign(2 * (size_t) nlocal, 0.0);
-  std::vector<double> local(2 * ncells(), 0.0), global(2 * ncells(), 0.0);
+  const int moved = 2 * ncells();    // slot of the count of next vertices with another image
+  std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
+  const bool images_checked =
+      (int) checked_next.size() == nlocal && checked_atoms == nlocal + atom->nghost;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     const int jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
     const int jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
+    if (images_checked && jn != checked_next[i]) local[moved] += 1.0;
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
       error->one(FLERR,
@@ -624,10 +636,14 @@ void FixDPolyCells::measure_cells()
     local[2 * c] += 0.5 * (xu[0] * dn[1] - xu[1] * dn[0]);
     local[2 * c + 1] += sqrt(dn[0] * dn[0] + dn[1] * dn[1]);
   }
-  MPI_Allreduce(local.data(), global.data(), 2 * ncells(), MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local.data(), global.data(), moved + 1, MPI_DOUBLE, MPI_SUM, world);
   for (int c = 0; c < ncells(); c++) {
     areas[c] = global[2 * c];
     perimeters[c] = global[2 * c + 1];
+  }
+  if (global[moved] > 0.0) {
+    share_unwrapped_positions();
+    check_segments();
   }
 }
 

@@ -88,6 +88,9 @@ class FixDPolyCells : public Fix {
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
   std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions, for ring checks
+  // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
+  std::vector<int> checked_next;
+  int checked_atoms;
 
   std::vector<class FixDPolyStage *> find_stages();
   void gather_rings();
