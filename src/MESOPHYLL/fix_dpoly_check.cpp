@@ -200,8 +200,8 @@ int FixDPolyCheck::tangled_cells(tagint &first)
    geometry no tissue can have. Cells that neither overlap nor invert fill a fraction in (0, 1]
    of the box, and so do their patches (compute dpoly/tissue's phi_patch) while vertex disks
    overlap by less than 1 - sin(pi/3) of their diameter. A segment not shorter than half the box
-   has another image of its next vertex nearer; fix dpoly/cells stops a run at the reneighbouring
-   where it finds one, this sees one grown since the last reneighbouring.
+   has another image of its next vertex nearer; fix dpoly/cells stops a run at the first force
+   evaluation with one, so this sees one only where that check was bypassed.
 ------------------------------------------------------------------------- */
 
 std::string FixDPolyCheck::geometry_problems()

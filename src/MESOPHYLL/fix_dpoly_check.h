@@ -20,8 +20,9 @@ namespace LAMMPS_NS {
 
 // Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
 // stopped, the final force norm, |P - P0|/P0, cells with area <= 0, rings that cross themselves,
-// packing fractions outside (0, 1] and ring segments not shorter than half the box. Warns (default) or stops with an error that names what failed. The first stage
-// after a minimization: it sees the minimum before any other stage changes it.
+// packing fractions outside (0, 1] and ring segments not shorter than half the box. Warns
+// (default) or stops with an error that names what failed. The first stage after a
+// minimization: it sees the minimum before any other stage changes it.
 class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
