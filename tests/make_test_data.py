@@ -20,6 +20,8 @@ configs = {
                                   "--bond-types", "2", "--shuffle", "11"],
     "single_contacts.data": ["--cells", "1", "--vertices", "16", "--spacing", "3.0",
                              "--bond-types", "2"],
+    # triangles, whose segments (1.5) outreach the communication cutoff of in.relax_cells
+    "triangles.data": ["--cells", "9", "--vertices", "3"],
 }
 configs["ring12.mol"] = ["--molecule", "--vertices", "12"]    # a molecule template
 for name, args in configs.items():

@@ -38,6 +38,27 @@ Tissue two_cells()
   return t;
 }
 
+// A regular n-gon of circumradius r around (x, y), counter-clockwise.
+Polygon regular_polygon(double x, double y, double r, int n)
+{
+  Polygon p;
+  for (int k = 0; k < n; k++)
+    p.corners.push_back({x + r * cos(2.0 * PI * k / n), y + r * sin(2.0 * PI * k / n)});
+  return p;
+}
+
+// The valid tissue in a box of 8 with cell 2 drawn out along x into a 'length' x 1 rectangle:
+// its segments 5-6 and 7-8 come near half the box (4).
+Tissue stretched_tissue(double length)
+{
+  Tissue t;
+  t.cells = {square(1.0, 1.0, 1.0),
+             {{{2.2, 1.0}, {2.2 + length, 1.0}, {2.2 + length, 2.0}, {2.2, 2.0}}}};
+  t.adhesive = {{2, 5}, {3, 8}};
+  t.box = 8.0;
+  return t;
+}
+
 std::string read_text(const std::string &path)
 {
   std::ifstream in(path);
@@ -171,6 +192,15 @@ std::string replaced(std::string text, const std::string &from, const std::strin
 
 const char *RUN = "run 0 post no\n";
 const char *MINIMIZE = "min_style fire\nminimize 0.0 1.0e-8 20 200\n";
+
+// Segment 5-6 of the stretched tissue (3.8 long, l0 raised to 6) grows past half the box (4)
+// during a minimization; the communication cutoff (4.5) holds every image of its vertices.
+std::string segment_outgrows_half_box()
+{
+  return on_tissue(write_tissue(stretched_tissue(3.8), "bad_input_stretched.data"),
+                   "comm_modify cutoff 4.5\nset atom 5 d_l0 6.0\nmin_style fire\n"
+                   "minimize 0.0 1.0e-8 5000 50000\n");
+}
 
 // ---------------------------------------------------------------------------------------
 // The table
@@ -351,7 +381,109 @@ std::vector<Case> cases()
                  t.sigma = 0.2;
                  return on_tissue(write_tissue(t, "bad_input_small_box.data"), RUN);
                },
-               ERROR, "the ring is not whole between vertex"});
+               ERROR,
+               "at step 0, ring segment 4-1 of cell 1 is 1 long (1 in y), not shorter than half "
+               "the box length in y (0.75)"});
+  c.push_back({"CellWiderThanTheBox", "geometry", "one 32-gon 2 wide in a box 1.8 wide",
+               []() {
+                 Tissue t;
+                 t.cells = {regular_polygon(0.9, 0.9, 1.0, 32)};
+                 t.box = 1.8;
+                 t.sigma = 0.1;
+                 return on_tissue(write_tissue(t, "bad_input_wide_cell.data"), RUN);
+               },
+               ERROR,
+               "cell 1 spans 2 in x, not less than the box length 1.8 in x: a cell must fit "
+               "inside the periodic box"});
+  // cell 2 across the periodic boundary in x, its vertices 5 and 8 0.9 away from it, further
+  // than the communication cutoff (0.8, the pair's: sigma 0.5 and skin 0.3)
+  c.push_back({"SegmentBeyondTheCutoff", "geometry",
+               "the tissue moved across the periodic boundary, comm_modify cutoff 0.5 (0.8 used)",
+               []() {
+                 return on_tissue(valid_data(),
+                                  "comm_modify cutoff 0.5\n"
+                                  "displace_atoms all move 27.9 0 0\n" +
+                                      std::string(RUN));
+               },
+               ERROR,
+               "at step 0, ring segment 7-8 of cell 2 is 1 long, longer than the communication "
+               "cutoff 0.8: the image of vertex 8 that continues the ring is no ghost atom here"});
+  c.push_back({"SegmentBeyondTheCutoffDuringRun", "geometry",
+               "the tissue moving across the periodic boundary (fix move), comm_modify cutoff "
+               "0.5 (0.8 used)",
+               []() {
+                 return on_tissue(valid_data(),
+                                  "comm_modify cutoff 0.5\n"
+                                  "displace_atoms all move 27.5 0 0\n"
+                                  "fix move all move linear 1 0 0\n"
+                                  "run 1000 post no\n");
+               },
+               ERROR,
+               "ring segment 7-8 of cell 2 is 1 long, longer than the communication cutoff 0.8"});
+  c.push_back({"SegmentPastHalfTheBoxDuringMinimization", "geometry",
+               "segment 5-6 (3.8 long, l0 = 6) grows past half the box (4) in a minimization",
+               []() {
+                 return segment_outgrows_half_box();
+               },
+               ERROR,
+               "in x), not shorter than half the box length in x (4): the nearest image of vertex "
+               "6 no longer continues the ring"});
+  // tools/make_cells.py --cells 9 --vertices 3 relaxed as examples/polygons/in.relax_cells does:
+  // segments of 1.5 under its communication cutoff of 1.0 (this gave phi < 0 and P < 0)
+  c.push_back({"TrianglesBeyondTheCutoff", "geometry",
+               "nine triangles of make_cells.py relaxed as in.relax_cells (comm_modify cutoff 1)",
+               []() {
+                 return "units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
+                        "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+                        "bond_style dpoly/segment\nangle_style dpoly/bending\n"
+                        "read_data " +
+                     data_file("triangles.data") +
+                     " fix Vertices NULL Vertices\n"
+                     "bond_coeff * 1.0\nangle_coeff * 0.4\npair_style soft 0.12\n"
+                     "pair_coeff * * 0.002\ncomm_modify cutoff 1.0\nfix cells all dpoly/cells\n"
+                     "fix relax all box/relax iso 1.0e-3 vmax 1.0e-3\nmin_style cg\n"
+                     "minimize 0.0 1.0e-10 20000 200000\n";
+               },
+               ERROR, "long, longer than the communication cutoff 1: the image of vertex"});
+  c.push_back(
+      {"CheckPackingAboveOne", "geometry", "fix dpoly/check on two 32-gons that overlap, phi 1.07",
+       []() {
+         Tissue t;
+         t.cells = {regular_polygon(0.7, 0.7, 0.6, 32), regular_polygon(0.75, 0.72, 0.6, 32)};
+         t.box = 1.45;
+         t.sigma = 0.1;
+         return on_tissue(write_tissue(t, "bad_input_overlap.data"),
+                          "fix check all dpoly/check action error\nminimize 0.0 0.0 0 0\n");
+       },
+       ERROR, "the packing fraction phi is outside (0, 1]: 1.06"});
+  c.push_back({"CheckPatchPackingAboveOne", "geometry",
+               "fix dpoly/check with compute dpoly/tissue on a 32-gon whose vertex disks "
+               "overlap its own images, phi_patch 1.33",
+               []() {
+                 Tissue t;
+                 t.cells = {regular_polygon(0.6, 0.6, 0.6, 32)};
+                 t.box = 1.25;
+                 return on_tissue(write_tissue(t, "bad_input_patch.data"),
+                                  "compute tissue all dpoly/tissue\n"
+                                  "fix check all dpoly/check action error\nminimize 0.0 0.0 0 0\n");
+               },
+               ERROR, "the packing fraction phi_patch of compute tissue is outside (0, 1]: 1.3"});
+  c.push_back({"CheckInvertedCell", "geometry",
+               "fix dpoly/check after a minimization that pushes a triangle's tip through its "
+               "pinned base (fix addforce, fix setforce)",
+               []() {
+                 Tissue t;
+                 t.cells = {{{{10.0, 10.0}, {11.0, 10.0}, {10.5, 10.866}}}};
+                 return on_tissue(write_tissue(t, "bad_input_triangle.data"),
+                                  "group tip id 3\ngroup base id 1 2\n"
+                                  "fix push tip addforce 0.0 -8.0 0.0\n"
+                                  "fix pin base setforce 0.0 0.0 0.0\n"
+                                  "fix check all dpoly/check action error\n"
+                                  "min_style fire\nminimize 0.0 1.0e-8 5000 50000\n");
+               },
+               ERROR,
+               "1 cells have area <= 0 (first: cell 1, area -1.31299); the packing fraction phi "
+               "is outside (0, 1]: -0.000820617"});
   c.push_back({"VerticesCoincide", "geometry", "vertex 2 moved onto vertex 1",
                []() {
                  return on_tissue(valid_data(), "set atom 2 x 10 y 10\n" + std::string(RUN));
@@ -563,6 +695,20 @@ TEST(BadInputBase, ValidTissueRunsClean)
        ERROR, ""});
   EXPECT_EQ(r.error, "");
   EXPECT_THAT(r.warnings, ::testing::Not(HasSubstr("FAILED")));
+}
+
+// The check during a run is collective: on all ranks (on 2, cell 2 lies across the ranks'
+// boundary, its vertices 5 and 6 on different ranks) the minimization stops with the message it
+// stops with on one rank, at the same step.
+TEST(BadInputDuringRun, SegmentPastHalfTheBoxStopsTheMinimization)
+{
+  const std::string input = segment_outgrows_half_box();
+  LammpsSession parallel, serial(self_comm());
+  const std::string error = without_location(parallel.try_run(input));
+  EXPECT_THAT(error, HasSubstr("Fix dpoly/cells: at step "));
+  EXPECT_THAT(error, HasSubstr("ring segment 5-6 of cell 2 is "));
+  EXPECT_THAT(error, HasSubstr("not shorter than half the box length in x (4)"));
+  EXPECT_EQ(error, without_location(serial.try_run(input)));
 }
 
 const char *BEGIN_MARK = "<!-- bad-input table: begin (written by tests/test_bad_input.cpp) -->";

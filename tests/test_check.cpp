@@ -1,6 +1,10 @@
 // fix dpoly/check: every minimum is checked and a failure is reported, never carried on silently.
 #include "test_helpers.h"
 
+#include "fix_dpoly_stage.h"
+#include "lammps.h"
+#include "modify.h"
+
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
@@ -91,6 +95,37 @@ TEST(Check, RingThatCrossesItselfIsReported)
         "minimize 0.0 0.0 0 0");
   EXPECT_EQ(s.thermo("f_check[5]"), 1.0);
   EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
+}
+
+// A ring segment not shorter than half the box at a minimum is reported. No run gets there (fix
+// dpoly/cells stops it at the first force evaluation after a segment passes half the box), so
+// the segment is drawn out by hand after a minimum, and the check called as after the next one.
+TEST(Check, SegmentPastHalfTheBoxIsReported)
+{
+  Tissue t;    // two cells in a box of 8; segments 5-6 and 7-8 of cell 2 are 3.95 long
+  t.cells = {square(1.0, 1.0, 1.0), {{{2.2, 1.0}, {6.15, 1.0}, {6.15, 2.0}, {2.2, 2.0}}}};
+  t.adhesive = {{2, 5}, {3, 8}};
+  t.box = 8.0;
+  LammpsSession s;
+  s.run(contact_commands(write_tissue(t, "check_stretched.data")) +
+        "comm_modify cutoff 4.5\nfix check all dpoly/check action error\n"
+        "minimize 1.0 0.0 10 100");    // converged (energy tolerance 1)
+  std::vector<double> x = s.gather("x", 3);
+  x[3 * 5] = x[3 * 4] + 4.25;    // vertex 6, 4.25 to the right of vertex 5
+  x[3 * 5 + 1] = x[3 * 4 + 1];
+  s.scatter("x", 3, x);
+  auto *lmp = static_cast<LAMMPS_NS::LAMMPS *>(s.lammps_handle());
+  auto *check = dynamic_cast<LAMMPS_NS::FixDPolyStage *>(lmp->modify->get_fix_by_id("check"));
+  ASSERT_NE(check, nullptr);
+  std::string error;
+  try {
+    check->act();
+  } catch (std::exception &e) {
+    error = e.what();
+  }
+  EXPECT_THAT(error,
+              HasSubstr("1 ring segments are not shorter than half the box (first: segment "
+                        "5-6 of cell 2, 4.25 long, 4.25 in x, half the box length 4)"));
 }
 
 TEST(Check, BadInput)

@@ -43,7 +43,7 @@ struct VertexRecord {
 }    // namespace
 
 FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0)
+    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0), checked_atoms(-1)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -81,7 +81,7 @@ FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 
 int FixDPolyCells::setmask()
 {
-  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE;
+  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR;
 }
 
 void FixDPolyCells::init()
@@ -154,6 +154,23 @@ void FixDPolyCells::min_post_force(int vflag)
   post_force(vflag);
 }
 
+/* ----------------------------------------------------------------------
+   at every reneighbouring, once atoms are wrapped and exchanged and the ghosts are new:
+   segments grow during a run, and one that outgrows half the box or the ghost cutoff would
+   silently join the wrong image of its next vertex (check_segments())
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::pre_neighbor()
+{
+  share_unwrapped_positions();
+  check_segments();
+}
+
+void FixDPolyCells::min_pre_neighbor()
+{
+  pre_neighbor();
+}
+
 void FixDPolyCells::post_force(int vflag)
 {
   measure_cells();
@@ -186,6 +203,7 @@ void FixDPolyCells::post_run()
       DPoly::rebuild_special_and_ghosts(lmp);
     else if (change & FixDPolyStage::STATE)
       DPoly::refresh_ghosts(lmp);
+    if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
     changed |= change;
   }
   if (changed == FixDPolyStage::NOTHING) return;
@@ -211,7 +229,9 @@ std::vector<DPoly::TissueMeasure *> FixDPolyCells::find_measures()
 void FixDPolyCells::refresh_cells()
 {
   gather_rings();
-  check_ring_images();
+  share_unwrapped_positions();
+  check_segments();
+  check_cell_extents();
   if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
   measure_cells();
   check_finite_terms();
@@ -457,43 +477,128 @@ int FixDPolyCells::cell_index(tagint molecule) const
   return found == sparse_index.end() ? -1 : found->second;
 }
 
-/* ----------------------------------------------------------------------
-   the area uses unwrapped positions, so each ring's image flags must keep it whole:
-   compare every vertex's unwrapped position with its ring neighbour's, sent by its owner
-------------------------------------------------------------------------- */
-
-void FixDPolyCells::check_ring_images()
+// the unwrapped positions of the owned atoms, and of every ghost as its owner has them: the
+// rings as their image flags make them, whichever images this rank holds
+void FixDPolyCells::share_unwrapped_positions()
 {
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  double **x = atom->x;
-  unwrapped.assign(3 * (size_t) nall, 0.0);
-  for (int i = 0; i < nlocal; i++) domain->unmap(x[i], atom->image[i], &unwrapped[3 * i]);
+  unwrapped.resize(3 * (size_t) (nlocal + atom->nghost));
+  for (int i = 0; i < nlocal; i++) domain->unmap(atom->x[i], atom->image[i], &unwrapped[3 * i]);
   comm->forward_comm(this);
+}
 
+/* ----------------------------------------------------------------------
+   collective: the rings as the styles see them (each vertex joined to the nearest image of its
+   next vertex) must be the rings of the unwrapped positions, which the shoelace area uses.
+   They part when a segment is not shorter than half the box (another image is nearer), when it
+   is longer than the ghost cutoff (its own image may be no ghost of this rank), or when image
+   flags do not keep a ring whole. Ghosts only change at reneighbouring, so a check at run start
+   and at every reneighbouring sees a wrong image before any force uses it. A segment that
+   outgrows half the box between two reneighbourings makes another image the nearest one, which
+   measure_cells() notices against the images recorded here.
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::check_segments()
+{
+  double **x = atom->x;
   const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd);
-  tagint broken = 0;
-  for (int i = 0; i < nlocal; i++) {
+  checked_next.assign(atom->nlocal, -1);
+  checked_atoms = atom->nlocal + atom->nghost;
+  tagint broken = 0;    // largest vertex ID whose next vertex is not where its ring continues
+  for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const tagint next = DPoly::ring_links(atom, i).next;
-    const int j = domain->closest_image(i, atom->map(next));
-    if (j < 0) {
-      broken = std::max(broken, atom->tag[i]);
-      continue;
-    }
-    for (int d = 0; d < 2; d++)
-      if (fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) > tolerance)
-        broken = std::max(broken, atom->tag[i]);
+    const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
+    checked_next[i] = j;
+    bool whole = j >= 0;
+    for (int d = 0; d < 2 && whole; d++)
+      whole = fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) <= tolerance;
+    if (!whole) broken = std::max(broken, atom->tag[i]);
   }
-  tagint any_broken;
-  MPI_Allreduce(&broken, &any_broken, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  if (any_broken)
+  tagint broken_any = 0;
+  MPI_Allreduce(&broken, &broken_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (!broken_any) return;
+
+  // its owner tells every rank the segment between the unwrapped positions, and the cell
+  const tagint next = rings.at(broken_any).next;
+  double found[4] = {0.0, 0.0, 0.0, 0.0}, found_any[4];    // dx, dy, cell, next held
+  const int i = atom->map(broken_any);
+  if (broken == broken_any && i >= 0 && i < atom->nlocal) {
+    const int j = atom->map(next);
+    if (j >= 0) {
+      found[0] = unwrapped[3 * j] - unwrapped[3 * i];
+      found[1] = unwrapped[3 * j + 1] - unwrapped[3 * i + 1];
+      found[3] = 1.0;
+    }
+    found[2] = (double) atom->molecule[i];
+  }
+  MPI_Allreduce(found, found_any, 4, MPI_DOUBLE, MPI_SUM, world);
+  const double length = std::hypot(found_any[0], found_any[1]);
+  const auto cell = (tagint) found_any[2];
+  const double half_box[2] = {0.5 * domain->xprd, 0.5 * domain->yprd};
+  const int periodic[2] = {domain->xperiodic, domain->yperiodic};
+  // the ghost cutoff is a length only in an orthogonal box
+  const double cutoff = domain->triclinic ? 0.0 : std::min(comm->cutghost[0], comm->cutghost[1]);
+
+  for (int d = 0; d < 2; d++)
+    if (found_any[3] > 0.0 && periodic[d] && fabs(found_any[d]) >= half_box[d])
+      error->all(FLERR,
+                 "Fix dpoly/cells: at step {}, ring segment {}-{} of cell {} is {:.8g} long "
+                 "({:.8g} in {}), not shorter than half the box length in {} ({:.8g}): the "
+                 "nearest image of vertex {} no longer continues the ring, so the cell's area "
+                 "and forces would be wrong; keep segments shorter than half the box (fix "
+                 "dpoly/refine splits long ones) and image flags that keep each ring whole",
+                 update->ntimestep, broken_any, next, cell, length, fabs(found_any[d]), "xy"[d],
+                 "xy"[d], half_box[d], next);
+  if (found_any[3] > 0.0 && cutoff > 0.0 && length > cutoff)
     error->all(FLERR,
-               "Fix dpoly/cells: the ring is not whole between vertex {} and its next "
-               "vertex: give the ring consistent image flags, keep its segments shorter "
-               "than half the box, and make sure the next vertex is within the "
-               "communication cutoff",
-               any_broken);
+               "Fix dpoly/cells: at step {}, ring segment {}-{} of cell {} is {:.8g} long, "
+               "longer than the communication cutoff {:.8g}: the image of vertex {} that "
+               "continues the ring is no ghost atom here, and a farther image would take its "
+               "place in the cell's area and forces; set comm_modify cutoff above the longest "
+               "segment",
+               update->ntimestep, broken_any, next, cell, length, cutoff, next);
+  error->all(FLERR,
+             "Fix dpoly/cells: the ring is not whole between vertex {} and its next "
+             "vertex: give the ring consistent image flags, keep its segments shorter "
+             "than half the box, and make sure the next vertex is within the "
+             "communication cutoff",
+             broken_any);
+}
+
+/* ----------------------------------------------------------------------
+   collective: a cell must fit inside the periodic box. A ring narrower than the box in x and in
+   y cannot meet its own periodic images (any translate by box vectors leaves its x or its y
+   range); a wider one can overlap them, and its area then counts more than once.
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::check_cell_extents()
+{
+  const int n = ncells();
+  // per cell, the largest x, y, -x and -y of its vertices' unwrapped positions
+  std::vector<double> local(4 * (size_t) n, -HUGE_VAL), global(4 * (size_t) n);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int c = cell_index(atom->molecule[i]);
+    if (c < 0) continue;
+    for (int d = 0; d < 2; d++) {
+      local[4 * c + d] = std::max(local[4 * c + d], unwrapped[3 * i + d]);
+      local[4 * c + 2 + d] = std::max(local[4 * c + 2 + d], -unwrapped[3 * i + d]);
+    }
+  }
+  MPI_Allreduce(local.data(), global.data(), 4 * n, MPI_DOUBLE, MPI_MAX, world);
+  const double box[2] = {domain->xprd, domain->yprd};
+  const int periodic[2] = {domain->xperiodic, domain->yperiodic};
+  for (int c = 0; c < n; c++)
+    for (int d = 0; d < 2; d++) {
+      const double extent = global[4 * c + d] + global[4 * c + 2 + d];
+      if (periodic[d] && extent >= box[d])
+        error->all(FLERR,
+                   "Fix dpoly/cells: cell {} spans {:.8g} in {}, not less than the box length "
+                   "{:.8g} in {}: a cell must fit inside the periodic box, or it can overlap its "
+                   "own periodic images and its area counts more than once in the packing "
+                   "fraction; use a larger box or smaller cells",
+                   cell_ids[c], extent, "xy"[d], box[d], "xy"[d]);
+    }
 }
 
 int FixDPolyCells::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
@@ -512,7 +617,10 @@ void FixDPolyCells::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   collective: area (shoelace on unwrapped positions) and perimeter of every cell
+   collective: area (shoelace on unwrapped positions) and perimeter of every cell. A nearest
+   image of a next vertex other than the one of the last ring check (the ghosts are the same
+   until the next reneighbouring) means a segment just passed half the box: the ring check
+   names it before any step is taken with the wrong image.
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::measure_cells()
@@ -521,13 +629,17 @@ void FixDPolyCells::measure_cells()
   double **x = atom->x;
   to_prev.assign(2 * (size_t) nlocal, 0.0);
   to_next.assign(2 * (size_t) nlocal, 0.0);
-  std::vector<double> local(2 * ncells(), 0.0), global(2 * ncells(), 0.0);
+  const int moved = 2 * ncells();    // slot of the count of next vertices with another image
+  std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
+  const bool images_checked =
+      (int) checked_next.size() == nlocal && checked_atoms == nlocal + atom->nghost;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     const int jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
     const int jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
+    if (images_checked && jn != checked_next[i]) local[moved] += 1.0;
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
       error->one(FLERR,
@@ -544,10 +656,14 @@ void FixDPolyCells::measure_cells()
     local[2 * c] += 0.5 * (xu[0] * dn[1] - xu[1] * dn[0]);
     local[2 * c + 1] += sqrt(dn[0] * dn[0] + dn[1] * dn[1]);
   }
-  MPI_Allreduce(local.data(), global.data(), 2 * ncells(), MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local.data(), global.data(), moved + 1, MPI_DOUBLE, MPI_SUM, world);
   for (int c = 0; c < ncells(); c++) {
     areas[c] = global[2 * c];
     perimeters[c] = global[2 * c + 1];
+  }
+  if (global[moved] > 0.0) {
+    share_unwrapped_positions();
+    check_segments();
   }
 }
 

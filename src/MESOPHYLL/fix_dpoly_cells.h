@@ -39,6 +39,8 @@ class FixDPolyCells : public Fix {
   void min_setup(int) override;
   void pre_force(int) override {}
   void min_pre_force(int) override {}
+  void pre_neighbor() override;
+  void min_pre_neighbor() override;
   void post_force(int) override;
   void min_post_force(int) override;
   void post_run() override;
@@ -88,12 +90,17 @@ class FixDPolyCells : public Fix {
 
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
-  std::vector<double> unwrapped;    // forward-communicated positions, for the image check
+  std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions, for ring checks
+  // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
+  std::vector<int> checked_next;
+  int checked_atoms;
 
   std::vector<class FixDPolyStage *> find_stages();
   std::vector<DPoly::TissueMeasure *> find_measures();
   void gather_rings();
-  void check_ring_images();
+  void share_unwrapped_positions();
+  void check_segments();
+  void check_cell_extents();
   void check_finite_terms();
   void measure_cells();
   void apply_area_forces(int vflag);

@@ -87,6 +87,7 @@ int FixDPolyCheck::check()
     }
   tagint first_tangled = 0;
   const int tangled = tangled_cells(first_tangled);
+  const std::string geometry = geometry_problems();
 
   last[0] = converged ? 1.0 : 0.0;
   last[1] = force_norm;
@@ -108,9 +109,11 @@ int FixDPolyCheck::check()
     problems +=
         fmt::format("; |P - P0|/P0 = {:.3g} exceeds {:.3g}", pressure_error, pressure_tolerance);
   if (inverted)
-    problems += fmt::format("; {} cells have area <= 0 (first: cell {})", inverted, first_inverted);
+    problems += fmt::format("; {} cells have area <= 0 (first: cell {}, area {:.6g})", inverted,
+                            first_inverted, cells->area(cells->cell_index(first_inverted)));
   if (tangled)
     problems += fmt::format("; {} rings cross themselves (first: cell {})", tangled, first_tangled);
+  problems += geometry;
 
   // the log line carries the problems too: LAMMPS stops printing warnings after its limit
   if (comm->me == 0)
@@ -125,7 +128,8 @@ int FixDPolyCheck::check()
   if (stop_on_failure) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
   return (!converged) + !(pressure_error <= pressure_tolerance) + (inverted > 0) + (tangled > 0) +
-      !(std::isfinite(energy) && std::isfinite(force_norm)) + !std::isfinite(pressure_value);
+      !(std::isfinite(energy) && std::isfinite(force_norm)) + !std::isfinite(pressure_value) +
+      !geometry.empty();
 }
 
 /* ----------------------------------------------------------------------
@@ -136,6 +140,29 @@ namespace {
 struct RingPoint {
   tagint tag;
   double x, y;
+};
+
+// every vertex of the group at its unwrapped position, on every rank (the rings are whole in
+// unwrapped coordinates: fix dpoly/cells checks it)
+class UnwrappedVertices {
+ public:
+  UnwrappedVertices(Atom *atom, Domain *domain, int groupbit, MPI_Comm world)
+  {
+    std::vector<RingPoint> mine;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(atom->mask[i] & groupbit)) continue;
+      double xu[3];
+      domain->unmap(atom->x[i], atom->image[i], xu);
+      mine.push_back({atom->tag[i], xu[0], xu[1]});
+    }
+    all = DPoly::gather_on_all_ranks(std::move(mine), world);
+    for (const auto &p : all) by_tag[p.tag] = &p;
+  }
+  const RingPoint &at(tagint tag) const { return *by_tag.at(tag); }
+
+ private:
+  std::vector<RingPoint> all;
+  std::unordered_map<tagint, const RingPoint *> by_tag;
 };
 
 bool segments_cross(const double *a, const double *b, const double *c, const double *d)
@@ -151,17 +178,7 @@ bool segments_cross(const double *a, const double *b, const double *c, const dou
 
 int FixDPolyCheck::tangled_cells(tagint &first)
 {
-  std::vector<RingPoint> mine;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & cells->groupbit)) continue;
-    double xu[3];
-    domain->unmap(atom->x[i], atom->image[i], xu);
-    mine.push_back({atom->tag[i], xu[0], xu[1]});
-  }
-  std::unordered_map<tagint, const RingPoint *> by_tag;
-  const std::vector<RingPoint> all = DPoly::gather_on_all_ranks(std::move(mine), world);
-  for (const auto &p : all) by_tag[p.tag] = &p;
-
+  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
   int tangled = 0;
   first = 0;
   for (int cell = 0; cell < cells->ncells(); cell++) {
@@ -171,11 +188,9 @@ int FixDPolyCheck::tangled_cells(tagint &first)
     for (int i = 0; i < n && !crossed; i++)
       for (int j = i + 2; j < n && !crossed; j++) {
         if (i == 0 && j == n - 1) continue;    // neighbours through the closing segment
-        const RingPoint *a = by_tag[ring[i]], *b = by_tag[ring[(i + 1) % n]];
-        const RingPoint *c = by_tag[ring[j]], *d = by_tag[ring[(j + 1) % n]];
-        // the ring is whole in unwrapped coordinates (fix dpoly/cells checks it)
-        const double pa[2] = {a->x, a->y}, pb[2] = {b->x, b->y}, pc[2] = {c->x, c->y},
-                     pd[2] = {d->x, d->y};
+        const RingPoint &a = vertices.at(ring[i]), &b = vertices.at(ring[(i + 1) % n]);
+        const RingPoint &c = vertices.at(ring[j]), &d = vertices.at(ring[(j + 1) % n]);
+        const double pa[2] = {a.x, a.y}, pb[2] = {b.x, b.y}, pc[2] = {c.x, c.y}, pd[2] = {d.x, d.y};
         crossed = segments_cross(pa, pb, pc, pd);
       }
     if (crossed) {
@@ -184,6 +199,71 @@ int FixDPolyCheck::tangled_cells(tagint &first)
     }
   }
   return tangled;
+}
+
+/* ----------------------------------------------------------------------
+   geometry no tissue can have. Cells that neither overlap nor invert fill a fraction in (0, 1]
+   of the box, and so do their patches (compute dpoly/tissue's phi_patch) while vertex disks
+   overlap by less than 1 - sin(pi/3) of their diameter. A segment not shorter than half the box
+   has another image of its next vertex nearer; fix dpoly/cells stops a run at the first force
+   evaluation with one, so this sees one only where that check was bypassed.
+------------------------------------------------------------------------- */
+
+std::string FixDPolyCheck::geometry_problems()
+{
+  std::string problems;
+  auto outside_unit_interval = [](double phi) {
+    return !(phi > 0.0 && phi <= 1.0);    // nan too
+  };
+  double cell_area = 0.0;
+  for (int c = 0; c < cells->ncells(); c++) cell_area += cells->area(c);
+  const double phi = cell_area / (domain->xprd * domain->yprd);
+  if (outside_unit_interval(phi))
+    problems += fmt::format("; the packing fraction phi is outside (0, 1]: {:.6g}", phi);
+  for (Compute *tissue : modify->get_compute_by_style("^dpoly/tissue$")) {
+    if (tissue->invoked_vector != update->ntimestep) tissue->compute_vector();
+    const double phi_patch = tissue->vector[1];    // its vector element 2
+    if (outside_unit_interval(phi_patch))
+      problems += fmt::format("; the packing fraction phi_patch of compute {} is outside (0, 1]: "
+                              "{:.6g}",
+                              tissue->id, phi_patch);
+  }
+
+  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
+  const double half_box[2] = {0.5 * domain->xprd, 0.5 * domain->yprd};
+  const int periodic[2] = {domain->xperiodic, domain->yperiodic};
+  int too_long = 0;
+  tagint first = 0, first_next = 0, first_cell = 0;
+  double first_d[2] = {0.0, 0.0};
+  for (int cell = 0; cell < cells->ncells(); cell++) {
+    const std::vector<tagint> &ring = cells->ring(cell);
+    const int n = (int) ring.size();
+    for (int i = 0; i < n; i++) {
+      const RingPoint &a = vertices.at(ring[i]), &b = vertices.at(ring[(i + 1) % n]);
+      const double d[2] = {b.x - a.x, b.y - a.y};
+      if (!((periodic[0] && fabs(d[0]) >= half_box[0]) ||
+            (periodic[1] && fabs(d[1]) >= half_box[1])))
+        continue;
+      too_long++;
+      if (!first || a.tag < first) {    // the lowest vertex ID: the same on any number of ranks
+        first = a.tag;
+        first_next = b.tag;
+        first_cell = cells->cell_id(cell);
+        first_d[0] = d[0];
+        first_d[1] = d[1];
+      }
+    }
+  }
+  if (too_long) {
+    const int dim = (periodic[0] && fabs(first_d[0]) >= half_box[0]) ? 0 : 1;
+    problems +=
+        fmt::format("; {} ring segments are not shorter than half the box (first: "
+                    "segment {}-{} of cell {}, {:.6g} long, {:.6g} in {}, half the box "
+                    "length {:.6g})",
+                    too_long, first, first_next, first_cell, std::hypot(first_d[0], first_d[1]),
+                    fabs(first_d[dim]), "xy"[dim], half_box[dim]);
+  }
+  return problems;
 }
 
 double FixDPolyCheck::compute_vector(int n)

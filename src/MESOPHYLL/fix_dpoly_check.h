@@ -14,12 +14,15 @@ FixStyle(dpoly/check,FixDPolyCheck);
 
 #include "fix_dpoly_stage.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 // Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
-// stopped, the final force norm, |P - P0|/P0, cells with area <= 0 and rings that cross
-// themselves. Warns (default) or stops with an error that names what failed. The first stage
-// after a minimization: it sees the minimum before any other stage changes it.
+// stopped, the final force norm, |P - P0|/P0, cells with area <= 0, rings that cross themselves,
+// packing fractions outside (0, 1] and ring segments not shorter than half the box. Warns
+// (default) or stops with an error that names what failed. The first stage after a
+// minimization: it sees the minimum before any other stage changes it.
 class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
@@ -35,6 +38,7 @@ class FixDPolyCheck : public FixDPolyStage {
   double last[7];
   int check();    // the number of problems found
   int tangled_cells(tagint &first);
+  std::string geometry_problems();    // "; ..." for each impossible geometry, "" if none
 };
 
 }    // namespace LAMMPS_NS
