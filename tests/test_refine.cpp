@@ -281,12 +281,10 @@ double published_theta0(double k1, double d1, double k2, double d2)
 // 3) splits whatever its length, 1-2 (both partners on cell 2) does not; 3-4 has one bonded end
 // and splits once, from 4; 4-5 is queued from both ends and split twice (l0/2, l0/4, l0/4);
 // 5-6 and 7-8 are queued from one end only (6 and 7 are large), 6-7 from neither; 8-1 from 8.
-TEST(RefinePublished, EachRuleOnAHandMadeRing)
+namespace {
+
+void expect_published_ring(LammpsSession &s)
 {
-  LammpsSession s;
-  s.run(hand_made_ring(true) +
-        "fix refine all dpoly/refine rules published runs yes\n"
-        "run 0 post no\nunfix refine");
   EXPECT_EQ(s.thermo("f_cells[1]"), 3.0);
   EXPECT_EQ(s.natoms(), 16 + 7);
   const double w = 0.4, corner = PI / 2;    // eps_b; the turning angle at a corner
@@ -314,6 +312,23 @@ TEST(RefinePublished, EachRuleOnAHandMadeRing)
   // cells 2 and 3 keep their rings; every vertex has one angle, every segment one bond
   EXPECT_EQ(s.thermo("angles"), 23.0);
   EXPECT_EQ(s.thermo("bonds"), 23.0 + 3) << "segments and the three adhesive bonds";
+}
+
+}    // namespace
+
+TEST(RefinePublished, EachRuleOnAHandMadeRing)
+{
+  for (const char *newton_bond : {"on", "off"}) {
+    SCOPED_TRACE(std::string("newton_bond ") + newton_bond);
+    // newton_bond off keeps every angle on all its atoms: the old vertices need room for more
+    std::string commands = std::string("newton on ") + newton_bond + "\n" + hand_made_ring(true);
+    commands.replace(commands.find("extra/special/per/atom 40"), 25,
+                     "extra/special/per/atom 40 extra/angle/per/atom 4");
+    LammpsSession s;
+    s.run(commands +
+          "fix refine all dpoly/refine rules published runs yes\nrun 0 post no\nunfix refine");
+    expect_published_ring(s);
+  }
 }
 
 // The published code's third candidate (an unbonded vertex between two bonded ones whose
