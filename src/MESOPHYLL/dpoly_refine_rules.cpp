@@ -45,7 +45,7 @@ namespace {
 
 using Ring = RefineTable::Ring;
 
-// A segment of a ring: its vertices and the vertices before and after it.
+// A ring segment, by its two vertices in ring order.
 struct Segment {
   const RefineVertex &first, &second;
 };

@@ -9,7 +9,6 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "comm.h"
-#include "domain.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_ring.h"
 #include "error.h"
