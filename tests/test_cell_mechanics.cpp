@@ -268,6 +268,115 @@ TEST(CellMechanics, SingleCellRelaxesToAnalyticState)
 }
 
 // ---------------------------------------------------------------------------------------
+// Per-vertex stiffness factors d_kl (segment to the next vertex) and d_kb (bending at the vertex)
+// multiply the types' eps_l and eps_b; without them every factor is 1.
+
+namespace {
+
+const char *STIFFNESS_STATE = "fix Stiffness all property/atom d_kl d_kb ghost yes\n";
+// factors that differ from vertex to vertex, deterministic in the atom ID
+const char *VARIED_FACTORS = "variable kl atom 1.0+0.6*sin(2.1*id)\n"
+                             "variable kb atom 1.0+0.5*cos(1.3*id)\n"
+                             "set group all d_kl v_kl\nset group all d_kb v_kb\n";
+
+std::unique_ptr<LammpsSession> deformed_tissue_with_factors(const Model &m = Model())
+{
+  auto s = std::make_unique<LammpsSession>();
+  s->run(setup_commands(data_file("deformed.data"), m));
+  s->run(std::string(PERTURB_STATE) + STIFFNESS_STATE + VARIED_FACTORS + "run 0 post no");
+  return s;
+}
+
+}    // namespace
+
+TEST(CellMechanics, StiffnessFactorsMatchFiniteDifferences)
+{
+  for (const Model &m : {Model(), Model{"on", 0.0, 1.0, 0.0}, Model{"on", 0.0, 0.0, 1.0},
+                         Model{"off", 1.0, 1.0, 0.4}}) {
+    SCOPED_TRACE("eps_l " + std::to_string(m.eps_l) + ", eps_b " + std::to_string(m.eps_b) +
+                 ", newton_bond " + m.newton_bond);
+    auto s = deformed_tissue_with_factors(m);
+    EXPECT_LT(finite_difference_error(*s), 1.0e-7);
+  }
+}
+
+// The factor of a segment is its first vertex's, the factor of a bending term its centre's:
+// one segment and one vertex of a regular 16-gon differ from the rest.
+TEST(CellMechanics, StiffnessFactorsBelongToTheSegmentsFirstVertex)
+{
+  LammpsSession s;
+  s.run(setup_commands(data_file("single.data")) + STIFFNESS_STATE +
+        "set group all d_kl 1.0\nset group all d_kb 1.0\n"
+        "set group all d_l0 0.31\nset atom 1 d_l0 0.5\nset atom 1 d_kl 3.0\nset atom 16 d_kl 0.2\n"
+        "variable th0 atom d_theta0+0.05\nset group all d_theta0 v_th0\n"
+        "set atom 1 d_theta0 0.1\nset atom 1 d_kb 2.5\nset atom 2 d_kb 0.5\nrun 0 post no");
+  const int n = s.natoms();
+  const std::vector<double> x = s.gather("x", 3);
+  const double length = std::hypot(x[3] - x[0], x[4] - x[1]);
+  auto segment = [&](double l0) {
+    return 0.5 * std::pow(length / l0 - 1.0, 2);
+  };
+  // segment 1 -> 2 has l0 0.5 and factor 3, segment 16 -> 1 factor 0.2, the rest factor 1
+  EXPECT_NEAR(s.thermo("ebond"), 3.0 * segment(0.5) + (0.2 + n - 2) * segment(0.31), 1.0e-13);
+  // vertex 1: theta - theta0 = 2 pi/n - 0.1, factor 2.5; vertex 2: 0.05, factor 0.5
+  const double bend = 0.5 * 0.4 * 0.05 * 0.05, first = 2.0 * PI / n - 0.1;
+  EXPECT_NEAR(s.thermo("eangle"), 2.5 * 0.5 * 0.4 * first * first + (0.5 + n - 2) * bend, 1.0e-13);
+}
+
+// Factors of 1 change nothing, to the last bit: inputs without d_kl and d_kb are the same model.
+TEST(CellMechanics, UnitStiffnessFactorsChangeNothing)
+{
+  auto plain = deformed_tissue();
+  auto ones = deformed_tissue();
+  ones->run(std::string(STIFFNESS_STATE) +
+            "set group all d_kl 1.0\nset group all d_kb 1.0\n"
+            "run 0 post no");
+  EXPECT_EQ(ones->gather("f", 3), plain->gather("f", 3));
+  for (const char *keyword : {"pe", "ebond", "eangle", "press"})
+    EXPECT_EQ(ones->thermo(keyword), plain->thermo(keyword)) << keyword;
+}
+
+TEST(CellMechanics, StiffnessFactorsInSingle)
+{
+  auto s = deformed_tissue_with_factors();
+  s->run(
+      "compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
+      "compute esum all reduce sum c_segments inputs local\n"
+      "compute asum all reduce sum c_bends inputs local\n"
+      "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
+  EXPECT_NEAR(s->thermo("c_esum"), s->thermo("ebond"), 1.0e-12 * s->thermo("ebond"));
+  EXPECT_NEAR(s->thermo("c_asum"), s->thermo("eangle"), 1.0e-12 * s->thermo("eangle"));
+}
+
+TEST(CellMechanics, StiffnessFactorsSurviveRestartAndDataFile)
+{
+  const std::string restart = scratch("factors.restart"), data = scratch("factors.data");
+  auto before = deformed_tissue_with_factors();
+  before->run("write_restart " + restart + "\nwrite_data " + data);
+
+  LammpsSession restarted;
+  restarted.run("read_restart " + restart + "\n" + VERTEX_STATE + STIFFNESS_STATE +
+                "comm_modify cutoff 2.0\nfix cells all dpoly/cells eps_a 1.0\n"
+                "thermo_style custom step pe ebond eangle f_cells press\nthermo_modify norm no\n"
+                "run 0 post no");
+  // the data file holds the factors as a section named after their fix
+  std::string read = setup_commands(data);
+  read.replace(read.find("read_data"), 0, STIFFNESS_STATE);
+  read.replace(read.find(" fix Vertices NULL Vertices"), 0, " fix Stiffness NULL Stiffness");
+  LammpsSession reread;
+  reread.run(read + "run 0 post no");
+  for (LammpsSession *after : {&restarted, &reread}) {
+    for (const char *name : {"x", "d_l0", "d_theta0", "d_kl", "d_kb"}) {
+      const int count = std::string(name) == "x" ? 3 : 1;
+      EXPECT_EQ(before->gather(name, count), after->gather(name, count)) << name;
+    }
+    for (const char *keyword : {"pe", "ebond", "eangle", "press"})
+      EXPECT_EQ(before->thermo(keyword), after->thermo(keyword)) << keyword;
+  }
+  if (world_size() == 1) remove(restart.c_str());
+}
+
+// ---------------------------------------------------------------------------------------
 // Bad input: each gets an error that names the problem. Single rank: some are per-atom errors.
 
 namespace {
@@ -296,6 +405,21 @@ const char *CCW_ANGLES = "1 1 4 1 2\n2 1 1 2 3\n3 1 2 3 4\n4 1 3 4 1\n";
 }    // namespace
 
 class BadInput : public ErrorTest {};
+
+TEST_F(BadInput, StiffnessFactors)
+{
+  const std::string base = setup_commands(square_data(CCW_ANGLES)) + STIFFNESS_STATE;
+  // a new fix property/atom holds zeros: a factor must be set
+  EXPECT_THAT(error_of(base + "set group all d_kb 1.0\nrun 0 post no"),
+              HasSubstr("d_kl of vertex 1 is not positive"));
+  EXPECT_THAT(error_of(base +
+                       "set group all d_kl 1.0\nset group all d_kb 1.0\n"
+                       "set atom 3 d_kb -2\nrun 0 post no"),
+              HasSubstr("d_kb of vertex 3 is not positive"));
+  std::string no_ghosts = base + "set group all d_kl 1.0\nset group all d_kb 1.0\nrun 0 post no";
+  no_ghosts.replace(no_ghosts.find("d_kl d_kb ghost yes"), 19, "d_kl d_kb");
+  EXPECT_THAT(error_of(no_ghosts), HasSubstr("needs d_kl on ghost atoms too"));
+}
 
 TEST_F(BadInput, ValidSquareIsAccepted)
 {

@@ -6,16 +6,12 @@
 
 using namespace test;
 
-// Every term at once: deformed rings (area, segments, bending), overlaps (contacts) and, after a
-// 3% dilation, stretched adhesive bonds. -dF_a/dx_b by central differences, h = 1e-6.
-TEST(Hessian, MatchesFiniteDifferencesOfTheForces)
+namespace {
+
+// The Hessian of the session's tissue against -dF_a/dx_b by central differences, h = 1e-6.
+void expect_hessian_matches_forces(LammpsSession &s)
 {
-  // 576 force evaluations: too many for 4 ranks on a 2-core machine; ranks are covered below
-  if (world_size() > 2) GTEST_SKIP() << "runs on 1 and 2 ranks";
-  LammpsSession s;
-  s.run(contact_commands(data_file("overlapping.data")) +
-        "adhere_cells all 2\nchange_box all x scale 1.03 y scale 1.03 remap\n"
-        "compute hessian all dpoly/hessian\nrun 0 post no");
+  s.run("compute hessian all dpoly/hessian\nrun 0 post no");
   const int n = s.natoms(), ndof = 2 * n;
   const std::vector<double> H = s.global_array("hessian", ndof, ndof);
 
@@ -45,6 +41,39 @@ TEST(Hessian, MatchesFiniteDifferencesOfTheForces)
   for (int a = 0; a < ndof; a++)
     for (int b = 0; b < a; b++)
       ASSERT_EQ(H[(size_t) a * ndof + b], H[(size_t) b * ndof + a]) << "symmetric";
+}
+
+}    // namespace
+
+// Every term at once: deformed rings (area, segments, bending), overlaps (contacts) and, after a
+// 3% dilation, stretched adhesive bonds.
+TEST(Hessian, MatchesFiniteDifferencesOfTheForces)
+{
+  // 576 force evaluations: too many for 4 ranks on a 2-core machine; ranks are covered below
+  if (world_size() > 2) GTEST_SKIP() << "runs on 1 and 2 ranks";
+  LammpsSession s;
+  s.run(contact_commands(data_file("overlapping.data")) +
+        "adhere_cells all 2\nchange_box all x scale 1.03 y scale 1.03 remap\n");
+  expect_hessian_matches_forces(s);
+}
+
+// The same with per-vertex factors of eps_l and eps_b (d_kl, d_kb) that differ from vertex to
+// vertex, on four small rings away from their preferred shapes.
+TEST(Hessian, StiffnessFactorsMatchFiniteDifferences)
+{
+  LammpsSession s;
+  s.run("units lj\ndimension 2\natom_style molecular\natom_modify map array\nboundary p p p\n"
+        "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+        "fix Stiffness all property/atom d_kl d_kb ghost yes\n"
+        "bond_style dpoly/segment\nangle_style dpoly/bending\nread_data " +
+        data_file("deformed.data") +
+        " fix Vertices NULL Vertices\nbond_coeff * 1.0\nangle_coeff * 0.4\n"
+        "comm_modify cutoff 2.0\nfix cells all dpoly/cells eps_a 1.0\n"
+        "variable l0 atom d_l0*(1.0+0.15*sin(3.7*id))\nset group all d_l0 v_l0\n"
+        "variable th0 atom d_theta0+0.3*cos(2.3*id)\nset group all d_theta0 v_th0\n"
+        "variable kl atom 1.0+0.6*sin(2.1*id)\nvariable kb atom 1.0+0.5*cos(1.3*id)\n"
+        "set group all d_kl v_kl\nset group all d_kb v_kb\n");
+  expect_hessian_matches_forces(s);
 }
 
 // Assembled on rank 0 from records sorted by atom ID: the same matrix on any number of ranks.

@@ -197,3 +197,43 @@ TEST(Laws, AngleBornMatrixMatchesSingle)
   x[next][0] = saved[0];
   x[next][1] = saved[1];
 }
+
+// With the per-vertex factors d_kl and d_kb, born_matrix(), single() and the turning law (which
+// the Hessian reads) scale with the factor of the segment's first vertex and of the centre.
+TEST(Laws, StiffnessFactorsEnterEveryLaw)
+{
+  if (world_size() > 1) GTEST_SKIP() << "local indices: runs on one rank";
+  auto s = stretched_tissue();
+  auto *lmp = static_cast<LAMMPS *>(s->lammps_handle());
+  auto *atom = lmp->atom;
+  auto *segment = lmp->force->bond_match("dpoly/segment");
+  auto *angle = dynamic_cast<LAMMPS_NS::AngleDPolyBending *>(lmp->force->angle);
+  ASSERT_TRUE(segment && angle);
+  const auto seg = first_bond(lmp, 1);
+  ASSERT_GE(seg.first, 0);
+  const double r = 0.3;
+  double du1, du2_1, f1;
+  segment->born_matrix(1, r * r, seg.first, seg.second, du1, du2_1);
+  const double e1 = segment->single(1, r * r, seg.first, seg.second, f1);
+  const LAMMPS_NS::DPoly::Law bend1 = angle->turning_law(1, 0, 0.7);
+
+  // the first vertex of the segment: the one whose next ring neighbour is the other
+  const bool forward = LAMMPS_NS::DPoly::ring_links(atom, seg.first).next == atom->tag[seg.second];
+  const int start = forward ? seg.first : seg.second, end = forward ? seg.second : seg.first;
+  s->run("fix Stiffness all property/atom d_kl d_kb ghost yes\nset group all d_kl 1.0\n"
+         "set group all d_kb 1.0\nset atom " +
+         std::to_string(atom->tag[start]) + " d_kl 2.5\nset atom " +
+         std::to_string(atom->tag[end]) + " d_kl 7.0\nset atom " + std::to_string(atom->tag[0]) +
+         " d_kb 3.0\nrun 0 post no");
+  double du, du2, f;
+  segment->born_matrix(1, r * r, seg.first, seg.second, du, du2);
+  EXPECT_DOUBLE_EQ(du, 2.5 * du1);
+  EXPECT_DOUBLE_EQ(du2, 2.5 * du2_1);
+  EXPECT_DOUBLE_EQ(segment->single(1, r * r, seg.first, seg.second, f), 2.5 * e1);
+  EXPECT_DOUBLE_EQ(f, 2.5 * f1);
+  check_bond(segment, 1, seg.first, seg.second, r, "segment with a factor");
+  const LAMMPS_NS::DPoly::Law bend = angle->turning_law(1, 0, 0.7);
+  EXPECT_DOUBLE_EQ(bend.energy, 3.0 * bend1.energy);
+  EXPECT_DOUBLE_EQ(bend.first, 3.0 * bend1.first);
+  EXPECT_DOUBLE_EQ(bend.second, 3.0 * bend1.second);
+}

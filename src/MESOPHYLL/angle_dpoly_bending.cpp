@@ -31,6 +31,7 @@ void AngleDPolyBending::init_style()
     error->all(FLERR, "Angle style dpoly/bending needs a 2d simulation (dimension 2)");
   vertex_state.find(atom, error, "Angle style dpoly/bending");
   const DPoly::VertexState state = vertex_state.get(atom, error, "Angle style dpoly/bending");
+  DPoly::check_stiffness_factors(lmp, state, "Angle style dpoly/bending");
   double local[2] = {0.0, (double) atom->nlocal}, global[2];
   for (int i = 0; i < atom->nlocal; i++) local[0] += state.preferred_angle[i];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
@@ -69,8 +70,7 @@ void AngleDPolyBending::compute(int eflag, int vflag)
       error->one(FLERR, "Angle style dpoly/bending: vertex {} coincides with a ring neighbour",
                  atom->tag[i2]);
 
-    const DPoly::Law law = DPoly::bending_law(stiffness[type], DPoly::turning_angle(d1, d2),
-                                              state.preferred_angle[i2]);
+    const DPoly::Law law = turning_law(state, type, i2, DPoly::turning_angle(d1, d2));
     const double torque = law.first;
     if (eflag) eangle = law.energy;
 
@@ -113,8 +113,17 @@ double AngleDPolyBending::single(int type, int i1, int i2, int i3)
 
 DPoly::Law AngleDPolyBending::turning_law(int type, int centre, double theta)
 {
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Angle style dpoly/bending");
-  return DPoly::bending_law(stiffness[type], theta, state.preferred_angle[centre]);
+  return turning_law(vertex_state.get(atom, error, "Angle style dpoly/bending"), type, centre,
+                     theta);
+}
+
+// without d_kb the type's eps_b alone, so that forces stay bitwise what they were
+DPoly::Law AngleDPolyBending::turning_law(const DPoly::VertexState &state, int type, int centre,
+                                          double theta)
+{
+  const double eps_b = state.bending_factor ? stiffness[type] * state.bending_factor[centre]
+                                            : stiffness[type];
+  return DPoly::bending_law(eps_b, theta, state.preferred_angle[centre]);
 }
 
 /* ----------------------------------------------------------------------

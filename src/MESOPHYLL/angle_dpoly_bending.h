@@ -19,8 +19,9 @@ AngleStyle(dpoly/bending,AngleDPolyBending);
 
 namespace LAMMPS_NS {
 
-// Bending term of a deformable polygon: U = (eps_b/2)(theta - theta0)^2 per vertex, with theta
-// the signed turning angle at the angle's middle atom and theta0 that vertex's preferred value.
+// Bending term of a deformable polygon: U = (k eps_b/2)(theta - theta0)^2 per vertex, with theta
+// the signed turning angle at the angle's middle atom, theta0 that vertex's preferred value and k
+// its optional stiffness factor (d_kb, else 1).
 class AngleDPolyBending : public DPoly::PerTypeStiffness<Angle> {
  public:
   AngleDPolyBending(class LAMMPS *);
@@ -33,6 +34,7 @@ class AngleDPolyBending : public DPoly::PerTypeStiffness<Angle> {
   // The bending law in the signed turning angle theta at the local vertex 'centre': U,
   // dU/dtheta and d2U/dtheta2, regular everywhere (born_matrix() is not at straight vertices).
   DPoly::Law turning_law(int type, int centre, double theta);
+  DPoly::Law turning_law(const DPoly::VertexState &state, int type, int centre, double theta);
 
  protected:
   double mean_interior_angle;    // pi - <theta0> when the run started, for equilibrium_angle()

@@ -34,15 +34,16 @@ void BondDPolySegment::init_style()
     error->all(FLERR, "Bond style dpoly/segment needs angles: they give each ring its order");
   vertex_state.find(atom, error, "Bond style dpoly/segment");
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
+  DPoly::check_stiffness_factors(lmp, state, "Bond style dpoly/segment");
   double longest = 0.0;
   for (int i = 0; i < atom->nlocal; i++) longest = std::max(longest, state.preferred_length[i]);
   MPI_Allreduce(&longest, &longest_preferred, 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
-double BondDPolySegment::preferred_length(const DPoly::VertexState &state, int i, int j)
+int BondDPolySegment::segment_start(int i, int j)
 {
-  const double l0 = DPoly::segment_preferred_length(atom, state, i, j);
-  if (l0 >= 0.0) return l0;
+  const int start = DPoly::segment_start(atom, i, j);
+  if (start >= 0) return start;
   const int owned = (i < atom->nlocal) ? i : j;
   const int centred = DPoly::ring_links(atom, owned).count;
   if (centred != 1)
@@ -55,11 +56,21 @@ double BondDPolySegment::preferred_length(const DPoly::VertexState &state, int i
              "must be consecutive vertices (prev, vertex, next) of the angle centred on "
              "one of them",
              atom->tag[i], atom->tag[j]);
-  return -1.0;
+  return -1;
+}
+
+// without d_kl the type's eps_l alone, so that forces stay bitwise what they were
+DPoly::DistanceLaw BondDPolySegment::segment_law(const DPoly::VertexState &state, int type, int i,
+                                                 int j, double r)
+{
+  const int start = segment_start(i, j);
+  const double eps_l = state.segment_factor ? stiffness[type] * state.segment_factor[start]
+                                            : stiffness[type];
+  return DPoly::segment_law(eps_l, r, state.preferred_length[start]);
 }
 
 /* ----------------------------------------------------------------------
-   U = (eps_l/2)(r/l0 - 1)^2 (DPoly::segment_law), F = -dU/dr along the bond
+   U = (k eps_l/2)(r/l0 - 1)^2 (DPoly::segment_law), F = -dU/dr along the bond
 ------------------------------------------------------------------------- */
 
 void BondDPolySegment::compute(int eflag, int vflag)
@@ -77,7 +88,6 @@ void BondDPolySegment::compute(int eflag, int vflag)
     const int i2 = bondlist[n][1];
     const int type = bondlist[n][2];
 
-    const double l0 = preferred_length(state, i1, i2);
     const double delx = x[i1][0] - x[i2][0];
     const double dely = x[i1][1] - x[i2][1];
     const double delz = x[i1][2] - x[i2][2];
@@ -87,7 +97,7 @@ void BondDPolySegment::compute(int eflag, int vflag)
       error->one(FLERR, "Bond style dpoly/segment: vertices {} and {} coincide", atom->tag[i1],
                  atom->tag[i2]);
 
-    const DPoly::DistanceLaw law = DPoly::segment_law(stiffness[type], r, l0);
+    const DPoly::DistanceLaw law = segment_law(state, type, i1, i2, r);
     const double fbond = law.fpair;
     if (eflag) ebond = law.energy;
 
@@ -105,8 +115,7 @@ double BondDPolySegment::single(int type, double rsq, int i, int j, double &ffor
 {
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
   const double r = sqrt(rsq);
-  const DPoly::DistanceLaw law =
-      DPoly::segment_law(stiffness[type], r, preferred_length(state, i, j));
+  const DPoly::DistanceLaw law = segment_law(state, type, i, j, r);
   fforce = (r > 0.0) ? law.fpair : 0.0;
   return law.energy;
 }
@@ -115,8 +124,7 @@ double BondDPolySegment::single(int type, double rsq, int i, int j, double &ffor
 void BondDPolySegment::born_matrix(int type, double rsq, int i, int j, double &du, double &du2)
 {
   const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style dpoly/segment");
-  const DPoly::DistanceLaw law =
-      DPoly::segment_law(stiffness[type], sqrt(rsq), preferred_length(state, i, j));
+  const DPoly::DistanceLaw law = segment_law(state, type, i, j, sqrt(rsq));
   du = law.first;
   du2 = law.second;
 }

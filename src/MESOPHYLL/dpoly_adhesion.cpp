@@ -61,3 +61,9 @@ const AdhesionCounts &DPoly::adhesion_counts(LAMMPS *lmp)
   const CellAdhesion *adhesion = find_cell_adhesion(lmp);
   return adhesion ? adhesion->counts() : none;
 }
+
+std::vector<AdhesiveBond> DPoly::gather_adhesive_bonds(LAMMPS *lmp)
+{
+  CellAdhesion *adhesion = find_cell_adhesion(lmp);
+  return adhesion ? adhesion->gather_bonds() : std::vector<AdhesiveBond>();
+}

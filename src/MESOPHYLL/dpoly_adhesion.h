@@ -61,13 +61,16 @@ namespace DPoly {
     }
   };
 
-  // What a bond style that adheres cells offers the generic styles: its current counts, and a
-  // collective recount from the bonds (fix dpoly/cells asks for it whenever it re-reads cells).
+  // What a bond style that adheres cells offers the generic styles: its current counts, a
+  // collective recount from the bonds (fix dpoly/cells asks for it whenever it re-reads cells),
+  // and the bonds themselves.
   class CellAdhesion {
    public:
     virtual ~CellAdhesion() noexcept(false) {}    // as LAMMPS styles: they may throw
     virtual const AdhesionCounts &counts() const = 0;
     virtual void recount() = 0;
+    // Collective: every adhesive bond of the system at its current length, sorted by IDs.
+    virtual std::vector<AdhesiveBond> gather_bonds() = 0;
   };
 
   // The cell-adhesion bond style of this LAMMPS instance, alone or in bond_style hybrid, or
@@ -75,6 +78,8 @@ namespace DPoly {
   CellAdhesion *find_cell_adhesion(LAMMPS *lmp);
   // Its counts, or empty counts (every vertex void-facing) if there is no such style.
   const AdhesionCounts &adhesion_counts(LAMMPS *lmp);
+  // Collective: its bonds, or none if there is no such style.
+  std::vector<AdhesiveBond> gather_adhesive_bonds(LAMMPS *lmp);
 
 }    // namespace DPoly
 }    // namespace LAMMPS_NS

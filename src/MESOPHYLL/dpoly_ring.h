@@ -12,6 +12,9 @@
 // Per-vertex state lives in custom per-atom properties, so that it migrates, reaches ghosts and
 // goes into restart and data files with LAMMPS's own machinery:
 //   fix ID all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes
+// Two more are optional, per-vertex factors of the per-type stiffnesses (absent: factor 1), so
+// that refinement can keep a ring's stiffness whatever its number of vertices:
+//   fix ID2 all property/atom d_kl d_kb ghost yes
 
 #ifndef LMP_DPOLY_RING_H
 #define LMP_DPOLY_RING_H
@@ -48,6 +51,12 @@ namespace DPoly {
     double *preferred_length;    // l0 of the segment from this vertex to the next one
     double *preferred_angle;     // theta0: preferred signed turning angle at this vertex
     double *preferred_area;      // a0 of the vertex's cell (the same on all its vertices)
+    // Optional factors of the types' eps_l (segment from this vertex to the next) and eps_b
+    // (bending at this vertex), d_kl and d_kb; nullptr when the property is not defined.
+    double *segment_factor;
+    double *bending_factor;
+    double segment_factor_of(int i) const { return segment_factor ? segment_factor[i] : 1.0; }
+    double bending_factor_of(int i) const { return bending_factor ? bending_factor[i] : 1.0; }
   };
   VertexState vertex_state(Atom *atom, Error *error, const char *style);
 
@@ -66,6 +75,7 @@ namespace DPoly {
 
    private:
     int diameter = -1, preferred_length = -1, preferred_angle = -1, preferred_area = -1;
+    int segment_factor = -1, bending_factor = -1;    // -1 also when not defined (optional)
     VertexState arrays(const Atom *atom) const;
   };
 
@@ -78,10 +88,16 @@ namespace DPoly {
 
   // Names of the custom properties, for messages and documentation.
   extern const char *const PROPERTY_HINT;
+  extern const char *const STIFFNESS_HINT;
 
-  // Preferred length of the ring segment joining local atoms i and j (one of them owned);
-  // returns a negative value when i and j are not consecutive vertices of one ring.
-  double segment_preferred_length(const Atom *atom, const VertexState &state, int i, int j);
+  // The first vertex, in ring order, of the ring segment joining local atoms i and j (one of
+  // them owned): i or j, whichever holds the segment's l0 and d_kl; -1 when i and j are not
+  // consecutive vertices of one ring.
+  int segment_start(const Atom *atom, int i, int j);
+
+  // Collective: an error naming 'style' and a vertex if a defined d_kl or d_kb is not positive
+  // and finite on some owned vertex (a fix property/atom starts its values at 0).
+  void check_stiffness_factors(LAMMPS *lmp, const VertexState &state, const char *style);
   // Every rank's records, concatenated in rank order, on every rank: the package's decisions
   // that must not depend on the number of ranks (ring checks, contact counts, bond breaking) are
   // taken from such whole-system tables.

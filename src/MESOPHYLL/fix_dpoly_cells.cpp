@@ -181,9 +181,10 @@ void FixDPolyCells::post_force(int vflag)
    after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
    order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt, one
    that changed per-vertex values (growth) its ghost atoms, before the next stage reads them;
-   the rings are re-read once, at the end. Min::cleanup() reads the minimizer's vectors after
-   this, so they must cover the atoms as they are now. The package's computes take the
-   minimum's values first and drop what the stages made stale (dpoly_measure.h).
+   the rings are re-read after a stage that changed them (refinement, which growth may follow).
+   Min::cleanup() reads the minimizer's vectors after this, so they must cover the atoms as they
+   are now. The package's computes take the minimum's values first and drop what the stages made
+   stale (dpoly_measure.h).
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::post_run()
@@ -204,10 +205,10 @@ void FixDPolyCells::post_run()
     else if (change & FixDPolyStage::STATE)
       DPoly::refresh_ghosts(lmp);
     if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
+    if (change & FixDPolyStage::RINGS) refresh_cells();
     changed |= change;
   }
   if (changed == FixDPolyStage::NOTHING) return;
-  if (changed & FixDPolyStage::RINGS) refresh_cells();
   if (update->whichflag == 2) update->minimize->reset_vectors();
   for (DPoly::TissueMeasure *measure : measures) measure->forget_values();
 }

@@ -27,7 +27,8 @@ namespace DPoly {
 // counter-clockwise ring), checks them, and adds the per-cell area term
 //   U_area = (eps_a/2) (a/a0 - 1)^2
 // to forces, energy and virial. After every minimization it runs the stage fixes (check, break,
-// grow, refine: see fix_dpoly_stage.h) in that order. Companion styles find it with find().
+// refine before growth, grow, refine: see fix_dpoly_stage.h) in that order. Companion styles
+// find it with find().
 class FixDPolyCells : public Fix {
  public:
   FixDPolyCells(class LAMMPS *, int, char **);

@@ -5,10 +5,10 @@
 
 #include "fix_dpoly_refine.h"
 
+#include "angle.h"
 #include "atom.h"
 #include "atom_vec.h"
 #include "comm.h"
-#include "domain.h"
 #include "dpoly_adhesion.h"
 #include "dpoly_ring.h"
 #include "error.h"
@@ -21,39 +21,48 @@
 #include <unordered_map>
 
 using namespace LAMMPS_NS;
-
-namespace {
-
-// Preferred length of each half of a segment of length l and preferred length l0 such that the
-// halves, at length l/2 each, carry the segment's tension (eps_l/l0)(l/l0 - 1): the solution of
-// (1/h)(l/(2h) - 1) = (1/l0)(l/l0 - 1) for h. The stiffness eps_l cancels; h = l/2 when l = l0.
-double half_preferred_length(double l, double l0)
-{
-  const double x = l / l0;
-  return l / (1.0 + sqrt(1.0 + 2.0 * x * (x - 1.0)));
-}
-
-}    // namespace
+using DPoly::RefinePlan;
+using DPoly::SegmentSplit;
 
 FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, REFINE, 3), radii(3.0), cap(5.0), void_only(1), steps(0),
-    added_total(0), added_last(0)
+    FixDPolyStage(lmp, narg, arg, REFINE, 3), rules_name("tension"), steps(0), added_total(0),
+    added_last(0)
 {
+  DPoly::RefineRules::Settings settings = {3.0, 5.0, true};
+  bool void_given = false;
+  int timing = -1;    // -1: the rule set's, 0: before growth, 1: after it
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
-    if (strcmp(key, "length") == 0) {
-      radii = utils::numeric(FLERR, value, false, lmp);
+    if (strcmp(key, "rules") == 0) {
+      rules_name = value;
+      if (!DPoly::RefineRules::create(rules_name, settings))
+        error->all(FLERR,
+                   "Fix dpoly/refine rules must be 'tension', 'published' or 'consistent', got "
+                   "'{}'",
+                   value);
+    } else if (strcmp(key, "length") == 0) {
+      settings.radii = utils::numeric(FLERR, value, false, lmp);
       // below 2 radii (one diameter) the halves' vertices would overlap their new neighbours
-      if (radii < 2.0)
+      if (settings.radii < 2.0)
         error->all(FLERR, "Fix dpoly/refine length must be >= 2 vertex radii, got {}", value);
     } else if (strcmp(key, "cap") == 0) {
-      cap = utils::numeric(FLERR, value, false, lmp);
-      if (cap < 1.0) error->all(FLERR, "Fix dpoly/refine cap must be >= 1, got {}", value);
-    } else if (strcmp(key, "void") == 0)
-      void_only = utils::logical(FLERR, value, false, lmp);
+      settings.cap = utils::numeric(FLERR, value, false, lmp);
+      if (settings.cap < 1.0) error->all(FLERR, "Fix dpoly/refine cap must be >= 1, got {}", value);
+    } else if (strcmp(key, "void") == 0) {
+      settings.void_only = utils::logical(FLERR, value, false, lmp);
+      void_given = true;
+    } else if (strcmp(key, "timing") == 0)
+      timing = one_of(key, value, "before_growth", "after_growth");
     else
       return false;
     return true;
   });
+  rules = DPoly::RefineRules::create(rules_name, settings);
+  if (void_given && rules_name != "tension")
+    error->all(FLERR,
+               "Fix dpoly/refine void applies to rules tension; rules {} has its own candidates",
+               rules_name);
+  if (timing < 0) timing = rules->before_growth() ? 0 : 1;
+  move_to(timing == 0 ? REFINE_BEFORE_GROWTH : REFINE);
   if (!atom->molecule_flag || !atom->avec->bonds_allow || !atom->avec->angles_allow)
     error->all(FLERR, "Fix dpoly/refine needs an atom style with molecule IDs, bonds and angles");
 }
@@ -63,6 +72,15 @@ void FixDPolyRefine::init()
   FixDPolyStage::init();
   if (atom->map_style == Atom::MAP_NONE)
     error->all(FLERR, "Fix dpoly/refine needs an atom map (atom_modify map array or hash)");
+  // the rule sets that scale stiffness per segment or vertex keep it in d_kl and d_kb
+  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/refine");
+  if ((rules->needs_segment_factors() && !state.segment_factor) ||
+      (rules->needs_bending_factors() && !state.bending_factor))
+    error->all(FLERR,
+               "Fix dpoly/refine rules {} keeps the {} stiffness per vertex: define {} with {} "
+               "(and set them to 1: set group all d_kl 1.0 ...)",
+               rules_name, rules->needs_bending_factors() ? "segment and bending" : "segment",
+               rules->needs_bending_factors() ? "d_kl and d_kb" : "d_kl", DPoly::STIFFNESS_HINT);
 }
 
 /* ----------------------------------------------------------------------
@@ -75,124 +93,109 @@ int FixDPolyRefine::act()
     for (int c = 0; c < cells->ncells(); c++)
       initial_vertices[cells->cell_id(c)] = cells->vertex_count(c);
 
-  std::vector<Split> splits = find_long_segments();
-  choose_within_cap(splits);
-  added_last = (int) splits.size();
+  std::vector<DPoly::AdhesiveBond> bonds;
+  const DPoly::RefineTable table = gather_table(bonds);
+  RefinePlan plan = rules->plan(table, initial_vertices);
+  number_new_vertices(plan);
+  int added = 0;
+  for (const SegmentSplit &s : plan.splits) added += (int) s.added.size();
+  added_last = added;
   steps++;
-  if (!splits.empty()) {
-    insert_vertices(splits);
-    rewire_topology(splits);
-    added_total += (bigint) splits.size();
+  if (added) {
+    insert_vertices(plan);
+    rewire_topology(plan.splits);
+    added_total += added;
   }
   if (comm->me == 0)
     utils::logmesg(lmp, "fix dpoly/refine: step {}: {} vertices added, {} in all\n", steps,
                    added_last, added_total);
-  return splits.empty() ? NOTHING : RINGS;
+  return added ? RINGS : NOTHING;
 }
 
 /* ----------------------------------------------------------------------
-   every segment longer than 'radii' vertex radii (the mean of its two vertices), with both
-   vertices void-facing unless 'void no'; the list is the same on every rank, in ID order
+   every vertex of the cells as its owner measures it at the minimum (the segment to the next
+   vertex and the turning angle, from the closest images), the rings from the hub, and the
+   adhesive bonds if the rule set reads them: the same table on every rank
 ------------------------------------------------------------------------- */
 
-std::vector<FixDPolyRefine::Split> FixDPolyRefine::find_long_segments()
+DPoly::RefineTable FixDPolyRefine::gather_table(std::vector<DPoly::AdhesiveBond> &bonds)
 {
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/refine");
-  const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
+  int dim = 0;
+  const double *bending_types =
+      force->angle ? static_cast<const double *>(force->angle->extract("eps_b", dim)) : nullptr;
   double **x = atom->x;
-  std::vector<Split> mine;
+  std::vector<DPoly::RefineVertex> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const DPoly::RingLinks links = DPoly::ring_links(atom, i);
     if (links.count != 1) continue;
     const int j = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/refine");
-    const double length = std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]);
-    if (length <= radii * 0.25 * (state.diameter[i] + state.diameter[j])) continue;
-    if (void_only && !(adhesion.void_facing(atom->tag[i]) && adhesion.void_facing(links.next)))
-      continue;
+    const int p = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/refine");
+    const double in[2] = {x[i][0] - x[p][0], x[i][1] - x[p][1]};
+    const double out[2] = {x[j][0] - x[i][0], x[j][1] - x[i][1]};
+    int angle_type = 0;
+    for (int m = 0; m < atom->num_angle[i]; m++)
+      if (atom->angle_atom2[i][m] == atom->tag[i]) angle_type = atom->angle_type[i][m];
     mine.push_back(
-        {atom->tag[i], links.next, atom->molecule[i], 0, length, state.preferred_length[i]});
+        {atom->tag[i], atom->molecule[i], state.diameter[i], state.preferred_length[i],
+         state.preferred_angle[i], state.segment_factor_of(i), state.bending_factor_of(i),
+         bending_types && angle_type > 0 ? bending_types[angle_type] : 1.0,
+         DPoly::turning_angle(in, out), std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1])});
   }
-  std::vector<Split> all = DPoly::gather_on_all_ranks(std::move(mine), world);
-  std::sort(all.begin(), all.end(), [](const Split &a, const Split &b) {
-    return a.first < b.first;
+  std::vector<DPoly::RefineVertex> all = DPoly::gather_on_all_ranks(std::move(mine), world);
+  std::sort(all.begin(), all.end(), [](const DPoly::RefineVertex &a, const DPoly::RefineVertex &b) {
+    return a.tag < b.tag;
   });
-  return all;
+
+  std::vector<DPoly::RefineTable::Ring> rings;
+  for (int c = 0; c < cells->ncells(); c++) rings.push_back({cells->cell_id(c), cells->ring(c)});
+  if (rules->needs_adhesive_bonds()) bonds = DPoly::gather_adhesive_bonds(lmp);
+  return DPoly::RefineTable(std::move(all), std::move(rings), DPoly::adhesion_counts(lmp), bonds);
 }
 
-/* ----------------------------------------------------------------------
-   keep, per cell, the longest segments that fit under the cap; number the new vertices after the
-   largest atom ID, in the order of the first vertex of their segments
-------------------------------------------------------------------------- */
-
-void FixDPolyRefine::choose_within_cap(std::vector<Split> &splits)
+// the new vertices' IDs follow the largest, in the order of the split segments' first vertices
+void FixDPolyRefine::number_new_vertices(RefinePlan &plan)
 {
-  std::stable_sort(splits.begin(), splits.end(), [](const Split &a, const Split &b) {
-    return a.cell != b.cell ? a.cell < b.cell : a.length > b.length;
-  });
-  std::vector<Split> chosen;
-  tagint cell = -1;
-  int room = 0;
-  for (const Split &s : splits) {
-    if (s.cell != cell) {
-      cell = s.cell;
-      const int index = cells->cell_index(cell);
-      const auto initial = initial_vertices.find(cell);
-      const int limit = (int) floor(
-          cap * (initial == initial_vertices.end() ? cells->vertex_count(index) : initial->second));
-      room = limit - cells->vertex_count(index);
-    }
-    if (room > 0) {
-      chosen.push_back(s);
-      room--;
-    }
-  }
-  std::sort(chosen.begin(), chosen.end(), [](const Split &a, const Split &b) {
-    return a.first < b.first;
-  });
-
   tagint largest = 0;
   for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, atom->tag[i]);
-  tagint largest_all = 0;
-  MPI_Allreduce(&largest, &largest_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  for (size_t k = 0; k < chosen.size(); k++) chosen[k].added = largest_all + 1 + (tagint) k;
-  splits = chosen;
+  tagint next = 0;
+  MPI_Allreduce(&largest, &next, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  for (SegmentSplit &s : plan.splits)
+    for (DPoly::NewVertex &v : s.added) v.tag = ++next;
 }
 
 /* ----------------------------------------------------------------------
-   the owner of each segment's first vertex creates the new vertex at the midpoint: straight
-   (theta0 = 0), the mean diameter, the cell's a0, and with its first vertex the halves' l0
+   the owner of each segment's first vertex creates its new vertices, each at the midpoint of the
+   vertex before it and the segment's second vertex, with the cell's a0 and the plan's values;
+   every owner takes the plan's new values of its existing vertices
 ------------------------------------------------------------------------- */
 
-void FixDPolyRefine::insert_vertices(const std::vector<Split> &splits)
+void FixDPolyRefine::insert_vertices(const RefinePlan &plan)
 {
-  struct NewVertex {
-    tagint tag, molecule;
+  struct Created {
+    const DPoly::NewVertex *values;
+    tagint molecule;
     int type, mask;
     imageint image;
-    double x[3], diameter, half_length, area;
-    int first;    // local index of the segment's first vertex
+    double x[3], area;
   };
   // read what is needed from the ghosts before creating atoms overwrites them
   DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/refine");
   double **x = atom->x;
-  std::vector<NewVertex> created;
-  for (const Split &s : splits) {
+  std::vector<Created> created;
+  for (const SegmentSplit &s : plan.splits) {
     const int i = atom->map(s.first);
     if (i < 0 || i >= atom->nlocal) continue;
     const int j = DPoly::closest_neighbour(lmp, i, s.second, "Fix dpoly/refine");
-    NewVertex v;
-    v.tag = s.added;
-    v.molecule = atom->molecule[i];
-    v.type = atom->type[i];
-    v.mask = atom->mask[i];
-    v.image = atom->image[i];
-    for (int d = 0; d < 3; d++) v.x[d] = 0.5 * (x[i][d] + x[j][d]);
-    v.diameter = 0.5 * (state.diameter[i] + state.diameter[j]);
-    v.half_length = half_preferred_length(s.length, s.preferred_length);
-    v.area = state.preferred_area[i];
-    v.first = i;
-    created.push_back(v);
+    const double *before = x[i];
+    for (const DPoly::NewVertex &v : s.added) {
+      Created c = {&v, atom->molecule[i],      atom->type[i], atom->mask[i], atom->image[i],
+                   {}, state.preferred_area[i]};
+      for (int d = 0; d < 3; d++) c.x[d] = 0.5 * (before[d] + x[j][d]);
+      created.push_back(c);
+      before = created.back().x;
+    }
   }
 
   // the same steps as create_atoms: clear the map and the ghosts, add, initialise fix values
@@ -200,41 +203,53 @@ void FixDPolyRefine::insert_vertices(const std::vector<Split> &splits)
   atom->nghost = 0;
   atom->avec->clear_bonus();
   const int nlocal_before = atom->nlocal;
-  for (const NewVertex &v : created) atom->avec->create_atom(v.type, const_cast<double *>(v.x));
+  for (const Created &c : created) atom->avec->create_atom(c.type, const_cast<double *>(c.x));
   atom->data_fix_compute_variable(nlocal_before, atom->nlocal);
 
   state = DPoly::vertex_state(atom, error, "Fix dpoly/refine");    // the arrays have grown
   for (size_t k = 0; k < created.size(); k++) {
-    const NewVertex &v = created[k];
+    const Created &c = created[k];
     const int n = nlocal_before + (int) k;
-    atom->tag[n] = v.tag;
-    atom->molecule[n] = v.molecule;
-    atom->mask[n] = v.mask;
-    atom->image[n] = v.image;
+    atom->tag[n] = c.values->tag;
+    atom->molecule[n] = c.molecule;
+    atom->mask[n] = c.mask;
+    atom->image[n] = c.image;
     atom->v[n][0] = atom->v[n][1] = atom->v[n][2] = 0.0;
     atom->f[n][0] = atom->f[n][1] = atom->f[n][2] = 0.0;    // the minimizer's clean-up reads f
-    state.diameter[n] = v.diameter;
-    state.preferred_length[n] = v.half_length;    // segment new vertex -> second
-    state.preferred_angle[n] = 0.0;
-    state.preferred_area[n] = v.area;
-    state.preferred_length[v.first] = v.half_length;    // segment first -> new vertex
+    state.diameter[n] = c.values->diameter;
+    state.preferred_length[n] = c.values->preferred_length;
+    state.preferred_angle[n] = c.values->preferred_angle;
+    state.preferred_area[n] = c.area;
+    if (state.segment_factor) state.segment_factor[n] = c.values->segment_factor;
+    if (state.bending_factor) state.bending_factor[n] = c.values->bending_factor;
   }
-  const bigint added = (bigint) splits.size();
+  bigint added = 0;
+  for (const SegmentSplit &s : plan.splits) added += (bigint) s.added.size();
   atom->natoms += added;
-  atom->nbonds += added;     // each split segment becomes two
-  atom->nangles += added;    // one angle centred on each new vertex
+  atom->nbonds += added;     // each new vertex adds one segment
+  atom->nangles += added;    // and one angle, centred on it
   atom->map_init();
   atom->map_set();
+
+  for (const DPoly::VertexUpdate &u : plan.updates) {
+    const int i = atom->map(u.tag);
+    if (i < 0 || i >= atom->nlocal) continue;
+    state.preferred_length[i] = u.preferred_length;
+    state.preferred_angle[i] = u.preferred_angle;
+    if (state.segment_factor) state.segment_factor[i] = u.segment_factor;
+    if (state.bending_factor) state.bending_factor[i] = u.bending_factor;
+  }
 }
 
 /* ----------------------------------------------------------------------
-   segment first-second becomes first-new and new-second; the angles that ran through the
-   segment now run through the new vertex, and the new vertex gets its own angle. Every rank
-   edits only the atoms it owns; with newton_bond on a bond or angle is stored once, so whoever
-   holds the old segment bond keeps one half and the new vertex holds the other.
+   segment first-second becomes the chain first-new...-second; the angles that ran through the
+   segment now run through its new vertices, and each new vertex gets its own angle. Every rank
+   edits only the atoms it owns; with newton_bond on a bond is stored once, so whoever holds the
+   old segment bond keeps the chain's link at its own end and each new vertex holds the link to
+   its successor (or, at the far end, to its predecessor); an angle is stored by its centre.
 ------------------------------------------------------------------------- */
 
-void FixDPolyRefine::rewire_topology(const std::vector<Split> &splits)
+void FixDPolyRefine::rewire_topology(const std::vector<SegmentSplit> &splits)
 {
   const bool newton_bond = force->newton_bond;
   const int nlocal = atom->nlocal;
@@ -282,7 +297,7 @@ void FixDPolyRefine::rewire_topology(const std::vector<Split> &splits)
     int bond, angle, first_holds_bond;
   };
   std::vector<Types> mine;
-  for (const Split &s : splits) {
+  for (const SegmentSplit &s : splits) {
     Types t = {s.first, 0, 0, 0};
     const int a = owned(s.first), b = owned(s.second);
     if (a >= 0) {
@@ -305,49 +320,61 @@ void FixDPolyRefine::rewire_topology(const std::vector<Split> &splits)
     if (t.first_holds_bond) known.first_holds_bond = 1;
   }
 
-  // the old segment's bond now ends at the new vertex
-  for (const Split &s : splits) {
+  for (const SegmentSplit &s : splits) {
     const Types &t = types[s.first];
     if (!t.bond || !t.angle)
       error->all(FLERR, "Fix dpoly/refine: segment {}-{} has no bond or its vertex no angle",
                  s.first, s.second);
-    const int a = owned(s.first), b = owned(s.second), n = owned(s.added);
+    // the chain: first, the new vertices, second
+    std::vector<tagint> chain = {s.first};
+    for (const DPoly::NewVertex &v : s.added) chain.push_back(v.tag);
+    chain.push_back(s.second);
+    const int last = (int) chain.size() - 1;
+
+    // the old segment's bond now ends at the nearest new vertex
+    const int a = owned(s.first), b = owned(s.second);
     if (a >= 0) {
       const int m = find_bond(a, s.second);
-      if (m >= 0) atom->bond_atom[a][m] = s.added;
+      if (m >= 0) atom->bond_atom[a][m] = chain[1];
     }
     if (b >= 0) {
       const int m = find_bond(b, s.first);
-      if (m >= 0) atom->bond_atom[b][m] = s.added;
+      if (m >= 0) atom->bond_atom[b][m] = chain[last - 1];
     }
-    if (n >= 0) {
-      if (newton_bond)
-        add_bond(n, t.bond, t.first_holds_bond ? s.second : s.first);
-      else {
-        add_bond(n, t.bond, s.first);
-        add_bond(n, t.bond, s.second);
+    for (int k = 1; k < last; k++) {
+      const int n = owned(chain[k]);
+      if (n < 0) continue;
+      if (!newton_bond) {
+        add_bond(n, t.bond, chain[k - 1]);
+        add_bond(n, t.bond, chain[k + 1]);
+      } else if (t.first_holds_bond)
+        add_bond(n, t.bond, chain[k + 1]);
+      else
+        add_bond(n, t.bond, chain[k - 1]);
+    }
+    // an angle centred on each new vertex, on its centre (and, newton_bond off, its ends)
+    for (int k = 1; k < last; k++)
+      for (int end = -1; end <= 1; end++) {
+        if (newton_bond && end != 0) continue;
+        const int i = owned(chain[k + end]);
+        if (i >= 0) add_angle(i, t.angle, chain[k - 1], chain[k], chain[k + 1]);
       }
-      add_angle(n, t.angle, s.first, s.added, s.second);
-    }
-    if (!newton_bond) {
-      if (a >= 0) add_angle(a, t.angle, s.first, s.added, s.second);
-      if (b >= 0) add_angle(b, t.angle, s.first, s.added, s.second);
-    }
   }
 
-  // angles (p, q, r) with q -> r or p -> q a split segment now run through its new vertex
-  std::unordered_map<tagint, const Split *> by_first;
-  for (const Split &s : splits) by_first[s.first] = &s;
-  auto vertex_between = [&](tagint from, tagint to) -> tagint {
+  // angles (p, q, r) with q -> r or p -> q a split segment now run through its new vertices;
+  // the new angles above join no split segment and are left as they are
+  std::unordered_map<tagint, const SegmentSplit *> by_first;
+  for (const SegmentSplit &s : splits) by_first[s.first] = &s;
+  auto split_of = [&](tagint from, tagint to) -> const SegmentSplit * {
     const auto it = by_first.find(from);
-    return (it != by_first.end() && it->second->second == to) ? it->second->added : 0;
+    return (it != by_first.end() && it->second->second == to) ? it->second : nullptr;
   };
   for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < atom->num_angle[i]; m++) {
       const tagint p = atom->angle_atom1[i][m], q = atom->angle_atom2[i][m],
                    r = atom->angle_atom3[i][m];
-      if (const tagint n = vertex_between(q, r)) atom->angle_atom3[i][m] = n;
-      if (const tagint n = vertex_between(p, q)) atom->angle_atom1[i][m] = n;
+      if (const SegmentSplit *s = split_of(q, r)) atom->angle_atom3[i][m] = s->added.front().tag;
+      if (const SegmentSplit *s = split_of(p, q)) atom->angle_atom1[i][m] = s->added.back().tag;
     }
 }
 

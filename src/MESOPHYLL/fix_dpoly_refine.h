@@ -12,42 +12,37 @@ FixStyle(dpoly/refine,FixDPolyRefine);
 #ifndef LMP_FIX_DPOLY_REFINE_H
 #define LMP_FIX_DPOLY_REFINE_H
 
+#include "dpoly_refine_rules.h"
 #include "fix_dpoly_stage.h"
 
 #include <map>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
 
-// Resolution control of the deformable polygons (doc/Howto_mesophyll.rst, "Vertex insertion"): after each
-// minimization, split every ring segment longer than a given number of vertex radii by a new
-// vertex at its midpoint, so that growing rings do not get coarse. The relaxed ring stays
-// relaxed: the new vertex is straight (theta0 = 0) and the two halves keep the segment's tension.
+// Resolution control of the deformable polygons (doc/Howto_mesophyll.rst, "Vertex insertion"):
+// after each minimization, split long ring segments by new vertices, so that growing rings do not
+// get coarse. Which segments split and how is a rule set (dpoly_refine_rules.h); this fix gathers
+// what the rule set reads, and adds the atoms, bonds and angles of its plan.
 class FixDPolyRefine : public FixDPolyStage {
  public:
   FixDPolyRefine(class LAMMPS *, int, char **);
   void init() override;
-  int act() override;    // split the long segments
+  int act() override;    // split the segments the rule set chooses
   double compute_vector(int) override;
 
  private:
-  // A segment to split, as every rank sees it.
-  struct Split {
-    tagint first, second;    // its vertices, in ring order
-    tagint cell;
-    tagint added;    // ID of the new vertex
-    double length, preferred_length;
-  };
-  std::vector<Split> find_long_segments();
-  void choose_within_cap(std::vector<Split> &splits);
-  void insert_vertices(const std::vector<Split> &splits);
-  void rewire_topology(const std::vector<Split> &splits);
+  DPoly::RefineTable gather_table(std::vector<DPoly::AdhesiveBond> &bonds);
+  void number_new_vertices(DPoly::RefinePlan &plan);
+  void insert_vertices(const DPoly::RefinePlan &plan);
+  void rewire_topology(const std::vector<DPoly::SegmentSplit> &splits);
   std::vector<double> restart_state() const override;
   bool restore_state(const std::vector<double> &) override;
 
-  double radii;     // split segments longer than this many vertex radii
-  double cap;       // at most cap x the vertex count a cell had at the first refinement
-  int void_only;    // split only segments between two vertices without adhesive bonds
+  std::string rules_name;
+  std::unique_ptr<DPoly::RefineRules> rules;
   bigint steps, added_total;
   int added_last;
   std::map<tagint, int> initial_vertices;    // per cell, at the first refinement

@@ -17,11 +17,13 @@ namespace LAMMPS_NS {
 // breaking bonds, growing cells, refining rings. Such a fix declares its stage and does its work
 // in act(); fix dpoly/cells calls the defined stages after every minimization in the protocol's
 // fixed order (the order of the stages below, whatever the order of the fix commands), and after
-// an MD run only those given 'runs yes'. The base class holds what every stage shares: the hub,
-// the 'runs' keyword, its global vector, and versioned, size-checked global restart data.
+// an MD run only those given 'runs yes'. Refinement has two places, before growth (where the
+// published code inserts vertices, at the radii of the minimum) and after it. The base class holds
+// what every stage shares: the hub, the 'runs' keyword, its global vector, and versioned,
+// size-checked global restart data.
 class FixDPolyStage : public Fix {
  public:
-  enum Stage { CHECK, BREAK, GROW, REFINE };
+  enum Stage { CHECK, BREAK, REFINE_BEFORE_GROWTH, GROW, REFINE };
   // what act() changed, so that the hub can bring LAMMPS's topology and its cells up to date
   // (STATE: per-vertex values, whose ghost copies the next stage may read)
   enum Change { NOTHING = 0, STATE = 1, BONDS = 2, RINGS = 4 };
@@ -51,6 +53,8 @@ class FixDPolyStage : public Fix {
   void parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword);
   // 0 if value is the word 'first', 1 if it is 'second'; otherwise an error naming key and value
   int one_of(const char *key, const char *value, const char *first, const char *second);
+  // a stage whose place depends on its keywords takes it after parsing them
+  void move_to(Stage stage) { my_stage = stage; }
 
   // The global state a stage keeps in restart files, and how it takes it back; restore()
   // returns false if the values cannot be this fix's (their number, for example).
