@@ -76,6 +76,7 @@ void MinFireNph::init()
   dtmax = tmax * dt;
   dtmin = tmin * dt;
   alpha = alpha0;
+  last_drift_time = 0.0;
   last_negative = update->ntimestep;
 }
 
@@ -271,7 +272,9 @@ int MinFireNph::iterate(int maxiter)
         dt = std::max(dt * dtshrink, dtmin);
         alpha = alpha0;
       }
-      if (halfstepback_flag) move(-0.5 * dt);
+      // the step back undoes at most half of the drift it corrects: a drift that dmax or vmax
+      // shortened must not be reversed by the full half time step
+      if (halfstepback_flag) move(-0.5 * std::min(dt, last_drift_time));
       zero_velocities();
     }
 
@@ -287,7 +290,8 @@ int MinFireNph::iterate(int maxiter)
     for (int k = 0; k < nextra_global; k++)
       box_velocity[k] += dt * ftm2v * fextra[k] / box_length[k] / box_mass[k];
     mix_velocities();
-    move(displacement_time());
+    last_drift_time = displacement_time();
+    move(last_drift_time);
 
     eprevious = ecurrent;
     ecurrent = energy_force(0);

@@ -35,6 +35,7 @@ class MinFireNph : public Min {
   double boxmass_scale;    // box mass relative to that of an affine dilation
 
   double dt, dtmax, dtmin, alpha;
+  double last_drift_time;    // time of the last drift, after dmax and vmax shortened it
   bigint last_negative;
   double *velocity;    // per-atom FIRE velocities, kept by fix_minimize so they migrate
 
