@@ -1,6 +1,7 @@
 // Bad input, table-driven: each case is one small change to a valid two-cell tissue (the data
 // file's per-vertex values, its topology, its geometry, a keyword) and the exact error or warning
-// text it must produce. One rank: some of the errors are per-atom errors.
+// text it must produce. The minimizer's cases change a setting of the 16-cell tissue's
+// minimization at constant pressure instead. One rank: some of the errors are per-atom errors.
 //
 // The table of doc/stability.md, section "Bad input", is written by this binary:
 //   MESOPHYLL_STABILITY_DOC=doc/stability.md build/tests/test_bad_input
@@ -192,6 +193,7 @@ std::string replaced(std::string text, const std::string &from, const std::strin
 
 const char *RUN = "run 0 post no\n";
 const char *MINIMIZE = "min_style fire\nminimize 0.0 1.0e-8 20 200\n";
+const char *MINIMIZE_TISSUE = "minimize 0.0 1.0e-10 20000 200000\n";    // tissue16_commands()
 
 // Segment 5-6 of the stretched tissue (3.8 long, l0 raised to 6) grows past half the box (4)
 // during a minimization; the communication cutoff (4.5) holds every image of its vertices.
@@ -209,7 +211,7 @@ enum Outcome { ERROR, WARNING };
 
 struct Case {
   const char *name;      // gtest name
-  const char *area;      // data file, topology, geometry, keywords, stages, check
+  const char *area;      // data file, topology, geometry, keywords, stages, check, minimizer
   const char *change;    // what the case changes, for the table
   std::function<std::string()> input;
   Outcome outcome;
@@ -608,6 +610,73 @@ std::vector<Case> cases()
                                   "min_style cg\nminimize 0.0 1.0e-8 20 200\n");    // fire zeroes v
                },
                ERROR, "nan is not finite"});
+
+  // --- the minimizer: min_style fire/nph stops a minimization that diverges or stalls, and
+  // says what diverged, where, and which setting to change. Runs that go wrong on the 16-cell
+  // tissue (examples/tissue) under fix box/relax, as in examples/mesophyll/in.mesophyll_short
+  auto minimizer_case = [&](const char *name, const char *change,
+                            const std::function<std::string()> &input, const std::string &message) {
+    c.push_back({name, "minimizer", change, input, ERROR, message});
+  };
+  minimizer_case(
+      "FireNphTimestepHuge", "timestep 100 (the stability limit is about 0.1)",
+      []() {
+        return tissue16_commands() + "timestep 100\n" + MINIMIZE_TISSUE;
+      },
+      "were cut short by min_modify dmax (0.1): the timestep 100 is beyond the stability limit "
+      "of the stiffest mode (about 2/omega_max); lower it");
+  minimizer_case(
+      "FireNphBoxMassTiny", "min_modify boxmass 1e-12",
+      []() {
+        return tissue16_commands() + "min_modify boxmass 1.0e-12\n" + MINIMIZE_TISSUE;
+      },
+      "the box overshoots, its mass is too small for its force; raise min_modify boxmass "
+      "(1e-12), or lower fix box/relax's vmax or its target pressure");
+  minimizer_case(
+      "FireNphPressureHuge", "fix box/relax iso 1e3 (the cells hold about 1)",
+      []() {
+        return tissue16_commands("1.0e3") + MINIMIZE_TISSUE;
+      },
+      "at the start of this minimization: the box collapses (fire/nph stops a box length that "
+      "shrinks below 1/4 or grows beyond 4 times it). Fix box/relax's target pressure may be a "
+      "compression the system cannot hold");
+  minimizer_case(
+      "FireNphTension", "fix box/relax iso -50 (a tension the tissue cannot hold)",
+      []() {
+        return tissue16_commands("-50") + MINIMIZE_TISSUE;
+      },
+      "the box runs away (fire/nph stops a box length that shrinks below 1/4 or grows beyond 4 "
+      "times it). Fix box/relax's target pressure may be a tension the system cannot hold");
+  minimizer_case(
+      "FireNphGrowthHuge", "fix mesophyll/grow delta_a 5, the minimization after it",
+      []() {
+        return tissue16_commands() + "fix grow all mesophyll/grow delta_a 5\n" + MINIMIZE_TISSUE +
+            MINIMIZE_TISSUE;
+      },
+      "a force changes faster than even that step resolves (a very stiff or non-smooth term, as "
+      "after a change of the system too large for one minimization, e.g. a large growth step)");
+  minimizer_case(
+      "FireNphEnergyNotFinite", "an energy of inf (fix addforce energy), at fixed box",
+      []() {
+        return on_tissue(valid_data(),
+                         "variable big atom 1.0e308*10\nvariable zero atom 0.0\n"
+                         "fix push all addforce v_zero 0.0 0.0 energy v_big\n"
+                         "fix_modify push energy yes\nmin_style fire/nph\n"
+                         "minimize 0.0 1.0e-8 20 200\n");
+      },
+      "min_style fire/nph: the energy is inf at step 1 (iteration 1 of this minimization): "
+      "the minimization diverged; lower the timestep");
+  minimizer_case(
+      "FireNphForceNotFinite", "a force of inf on vertex 3 (fix addforce), at fixed box",
+      []() {
+        return on_tissue(valid_data(),
+                         "variable big equal 1.0e308*10\nvariable zero atom 0.0\ngroup three id 3\n"
+                         "fix push three addforce v_big 0.0 0.0 energy v_zero\n"
+                         "min_style fire/nph\n"
+                         "minimize 0.0 1.0e-8 20 200\n");
+      },
+      "min_style fire/nph: the force norm is inf at step 0 (iteration 0 of this minimization); "
+      "inf on atom 3 (molecule 1): the minimization diverged");
   return c;
 }
 

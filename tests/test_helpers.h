@@ -218,6 +218,28 @@ inline std::string contact_commands(const std::string &data, const Contacts &c =
       "thermo_modify norm no\n";
 }
 
+// The 16-cell confluent tissue of examples/tissue at P0 under fix box/relax, minimized by
+// min_style fire/nph with the settings of examples/mesophyll/in.mesophyll; no stages.
+inline std::string tissue16_commands(const std::string &P0 = "1.0e-3")
+{
+  const char *dir = getenv("MESOPHYLL_EXAMPLES");
+  return "units lj\ndimension 2\natom_style molecular\nboundary p p p\n"
+         "fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes\n"
+         "bond_style hybrid dpoly/segment mesophyll/adhesion z bonds\n"
+         "angle_style dpoly/bending\nread_data " +
+      std::string(dir ? dir : "examples") +
+      "/tissue/tissue_N16.data fix Vertices NULL Vertices extra/special/per/atom 40\n"
+      "bond_coeff 1 dpoly/segment 1.0\nbond_coeff 2 mesophyll/adhesion 1.0\n"
+      "angle_coeff * 0.4\npair_style dpoly/contact\npair_coeff * * 1.0\n"
+      "special_bonds lj 1.0 1.0 1.0\ncomm_modify cutoff 4.0\n"
+      "fix cells all dpoly/cells eps_a 1.0\n"
+      "fix relax all box/relax iso " +
+      P0 +
+      " vmax 1.0e-3\n"
+      "thermo_style custom step pe press lx\nthermo_modify norm no\n"
+      "min_style fire/nph\ntimestep 0.01\nmin_modify tmax 5\n";
+}
+
 // Resume a tissue of contact_commands() from a restart file: what the restart file does not hold
 // (the vertex properties' fix, the hybrid bond coefficients, the cells' hub) is given again.
 inline std::string resume_commands(const std::string &restart)

@@ -25,6 +25,14 @@ using namespace LAMMPS_NS;
 // same normalisation of the energy tolerance as LAMMPS's other minimizers
 static constexpr double EPS_ENERGY = 1.0e-8;
 
+// FIRE is stalled when it turns uphill this many times at its smallest time step before dt
+// grows back to the timestep (a converging run does not reach dtmin at all)
+static constexpr bigint STALL_UPHILL_STEPS = 1000;
+
+// within one minimization, a box length may shrink or grow by at most this factor: a larger
+// change is a box that collapses or runs away, not a relaxation (vmax already bounds one step)
+static constexpr double BOX_CHANGE_LIMIT = 4.0;
+
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
@@ -76,7 +84,9 @@ void MinFireNph::init()
   dtmax = tmax * dt;
   dtmin = tmin * dt;
   alpha = alpha0;
+  last_drift_time = 0.0;
   last_negative = update->ntimestep;
+  stall = StallRecord();
 }
 
 /* ----------------------------------------------------------------------
@@ -164,12 +174,17 @@ double MinFireNph::global_sum(double local) const
    power v.f over atoms and box; the box force on q_k is -dH/dq_k = fextra_k / L_k
 ------------------------------------------------------------------------- */
 
-double MinFireNph::vdotf() const
+MinFireNph::Power MinFireNph::vdotf() const
 {
   double local = 0.0;
   for (int i = 0; i < nvec; i++) local += velocity[i] * fvec[i];
-  double power = global_sum(local);
-  for (int k = 0; k < nextra_global; k++) power += box_velocity[k] * fextra[k] / box_length[k];
+  Power power = {0.0, global_sum(local), 0.0};
+  power.total = power.atoms;
+  for (int k = 0; k < nextra_global; k++) {
+    const double box_power = box_velocity[k] * fextra[k] / box_length[k];
+    power.total += box_power;
+    power.box += box_power;
+  }
   return power;
 }
 
@@ -182,10 +197,11 @@ void MinFireNph::zero_velocities()
 }
 
 /* ----------------------------------------------------------------------
-   FIRE's steering: v <- (1 - alpha) v + alpha |v| f/|f|, norms over atoms and box together
+   FIRE's steering: v <- (1 - alpha) v + alpha |v| f/|f|, norms over atoms and box together;
+   returns |f|^2, which the divergence check reuses
 ------------------------------------------------------------------------- */
 
-void MinFireNph::mix_velocities()
+double MinFireNph::mix_velocities()
 {
   double local[2] = {0.0, 0.0};
   for (int i = 0; i < nvec; i++) {
@@ -199,12 +215,13 @@ void MinFireNph::mix_velocities()
     all[0] += box_velocity[k] * box_velocity[k];
     all[1] += fq * fq;
   }
-  if (all[1] <= 0.0) return;
+  if (!(all[1] > 0.0)) return all[1];
   const double keep = 1.0 - alpha;
   const double steer = alpha * sqrt(all[0] / all[1]);
   for (int i = 0; i < nvec; i++) velocity[i] = keep * velocity[i] + steer * fvec[i];
   for (int k = 0; k < nextra_global; k++)
     box_velocity[k] = keep * box_velocity[k] + steer * fextra[k] / box_length[k];
+  return all[1];
 }
 
 /* ----------------------------------------------------------------------
@@ -212,25 +229,31 @@ void MinFireNph::mix_velocities()
    by more than dmax, and no box strain beyond fix box/relax's vmax
 ------------------------------------------------------------------------- */
 
-double MinFireNph::displacement_time() const
+MinFireNph::Drift MinFireNph::displacement_time() const
 {
-  double vmax_local = 0.0;
-  for (int i = 0; i < nvec; i++) vmax_local = std::max(vmax_local, fabs(velocity[i]));
-  double vmax_all = 0.0;
-  MPI_Allreduce(&vmax_local, &vmax_all, 1, MPI_DOUBLE, MPI_MAX, world);
-  for (int k = 0; k < nextra_global; k++) vmax_all = std::max(vmax_all, fabs(box_velocity[k]));
+  double atom_speed_local = 0.0;
+  for (int i = 0; i < nvec; i++) atom_speed_local = std::max(atom_speed_local, fabs(velocity[i]));
+  double atom_speed = 0.0;
+  MPI_Allreduce(&atom_speed_local, &atom_speed, 1, MPI_DOUBLE, MPI_MAX, world);
+  double box_speed = 0.0;
+  for (int k = 0; k < nextra_global; k++) box_speed = std::max(box_speed, fabs(box_velocity[k]));
 
-  double time = dt;
-  if (vmax_all * time > dmax) time = dmax / vmax_all;
+  Drift drift = {dt, atom_speed * dt > dmax, box_speed * dt > dmax};
+  const double speed = std::max(atom_speed, box_speed);
+  if (speed * dt > dmax) drift.time = dmax / speed;
   if (nextra_global) {
     bool moving = false;
     for (int k = 0; k < nextra_global; k++) {
       box_step[k] = box_velocity[k] / box_length[k];
       if (box_step[k] != 0.0) moving = true;
     }
-    if (moving) time = std::min(time, modify->max_alpha(box_step));
+    if (moving) {
+      const double box_time = modify->max_alpha(box_step);
+      if (box_time < dt) drift.box_limited = true;
+      drift.time = std::min(drift.time, box_time);
+    }
   }
-  return time;
+  return drift;
 }
 
 /* ----------------------------------------------------------------------
@@ -241,6 +264,7 @@ void MinFireNph::move(double time)
 {
   for (int i = 0; i < nvec; i++) xvec[i] += time * velocity[i];
   if (nextra_global) {
+    check_box_move(time);
     for (int k = 0; k < nextra_global; k++) box_step[k] = box_velocity[k] / box_length[k];
     modify->min_store();
     modify->min_step(time, box_step);
@@ -260,18 +284,23 @@ int MinFireNph::iterate(int maxiter)
     niter++;
 
     // FIRE: keep going downhill and speed up; on an uphill step stop, step back, slow down
-    if (vdotf() > 0.0) {
+    const Power power = vdotf();
+    if (power.total > 0.0) {
       if (ntimestep - last_negative > delaystep) {
         dt = std::min(dt * dtgrow, dtmax);
         alpha *= alphashrink;
       }
+      if (dt >= std::max(update->dt, 2.0 * dtmin)) stall = StallRecord();
     } else {
       last_negative = ntimestep;
       if (!(delaystep_start_flag && ntimestep - update->firststep <= delaystep)) {
         dt = std::max(dt * dtshrink, dtmin);
         alpha = alpha0;
       }
-      if (halfstepback_flag) move(-0.5 * dt);
+      if (dt <= dtmin) record_stall_uphill(power);
+      // the step back undoes at most half of the drift it corrects: a drift that dmax or vmax
+      // shortened must not be reversed by the full half time step
+      if (halfstepback_flag) move(-0.5 * std::min(dt, last_drift_time));
       zero_velocities();
     }
 
@@ -286,12 +315,16 @@ int MinFireNph::iterate(int maxiter)
     }
     for (int k = 0; k < nextra_global; k++)
       box_velocity[k] += dt * ftm2v * fextra[k] / box_length[k] / box_mass[k];
-    mix_velocities();
-    move(displacement_time());
+    check_force_norm(mix_velocities());
+    const Drift drift = displacement_time();
+    if (dt <= dtmin) record_stall_drift(drift);
+    last_drift_time = drift.time;
+    move(last_drift_time);
 
     eprevious = ecurrent;
     ecurrent = energy_force(0);
     neval++;
+    check_energy();
     alpha_final = alpha;
 
     if (update->etol > 0.0 && ntimestep - last_negative > delaystep &&
@@ -317,4 +350,154 @@ int MinFireNph::iterate(int maxiter)
     }
   }
   return MAXITER;
+}
+
+/* ----------------------------------------------------------------------
+   divergence: stop with what diverged, where, and what to change, before a NaN spreads or
+   fix box/relax meets a negative box length
+------------------------------------------------------------------------- */
+
+// the settings that bound FIRE's steps, for the messages
+std::string MinFireNph::what_to_change() const
+{
+  std::string advice = fmt::format("lower the timestep ({}; FIRE's steps grow to tmax x timestep = "
+                                   "{}) or min_modify dmax ({})",
+                                   update->dt, dtmax, dmax);
+  if (nextra_global)
+    advice += fmt::format("; for the box: raise min_modify boxmass ({}), lower fix box/relax's "
+                          "vmax, or check its target pressure",
+                          boxmass_scale);
+  return advice;
+}
+
+void MinFireNph::check_energy() const
+{
+  if (std::isfinite(ecurrent)) return;
+  error->all(FLERR,
+             "min_style fire/nph: the energy{} is {} at step {} (iteration {} of this "
+             "minimization): the minimization diverged; {}",
+             nextra_global ? " (enthalpy U + P0 V)" : "", ecurrent, update->ntimestep, niter,
+             what_to_change());
+}
+
+// force_norm_sqr: |f|^2 over atoms and box, of the forces at the previous step
+void MinFireNph::check_force_norm(double force_norm_sqr) const
+{
+  if (std::isfinite(force_norm_sqr)) return;
+  error->all(FLERR,
+             "min_style fire/nph: the force norm is {} at step {} (iteration {} of this "
+             "minimization); {}: the minimization diverged; {}",
+             sqrt(force_norm_sqr), update->ntimestep - 1, niter - 1, largest_force(),
+             what_to_change());
+}
+
+/* ----------------------------------------------------------------------
+   the box lengths that moving by 'time' would give: each must stay finite and within
+   BOX_CHANGE_LIMIT of its length at the start of the minimization (q is the change of length)
+------------------------------------------------------------------------- */
+
+void MinFireNph::check_box_move(double time) const
+{
+  const char *axis = "xyz";
+  const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
+  for (int k = 0; k < nextra_global; k++) {
+    if (box_velocity[k] == 0.0 && std::isfinite(prd[k])) continue;
+    const double length = prd[k] + time * box_velocity[k];
+    const double change = length / box_length[k];
+    if (std::isfinite(length) && change >= 1.0 / BOX_CHANGE_LIMIT && change <= BOX_CHANGE_LIMIT)
+      continue;
+    if (!std::isfinite(length))
+      error->all(FLERR,
+                 "min_style fire/nph: step {} would make box length {} {} (it is {}, box "
+                 "velocity {}): the box diverged; {}",
+                 update->ntimestep, axis[k], length, prd[k], box_velocity[k], what_to_change());
+    const bool shrinks = change < 1.0;
+    error->all(FLERR,
+               "min_style fire/nph: step {} would take box length {} to {}, {:.3g} times its "
+               "length {} at the start of this minimization: the box {} (fire/nph stops a box "
+               "length that shrinks below 1/{} or grows beyond {} times it). Fix box/relax's "
+               "target pressure may be {} the system cannot hold, or the box dynamics diverged: "
+               "{}. For a large change that is meant, minimize in stages",
+               update->ntimestep, axis[k], length, change, box_length[k],
+               shrinks ? "collapses" : "runs away", BOX_CHANGE_LIMIT, BOX_CHANGE_LIMIT,
+               shrinks ? "a compression" : "a tension", what_to_change());
+  }
+}
+
+/* ----------------------------------------------------------------------
+   stall: uphill again and again at dt = dtmin. Whether the drifts ran into dmax or vmax, and
+   whether the atoms or only the box turned uphill, tells which setting is too bold
+------------------------------------------------------------------------- */
+
+void MinFireNph::record_stall_drift(const Drift &drift)
+{
+  stall.drifts++;
+  if (drift.atoms_at_dmax) stall.atoms_at_dmax++;
+  if (drift.box_limited) stall.box_limited++;
+}
+
+void MinFireNph::record_stall_uphill(const Power &power)
+{
+  stall.uphill++;
+  if (power.atoms < 0.0) stall.atoms_uphill++;
+  if (power.box < 0.0) stall.box_uphill++;
+  if (stall.uphill < STALL_UPHILL_STEPS) return;
+
+  std::string cause;
+  if (nextra_global && 2 * stall.box_uphill > stall.uphill)
+    cause = fmt::format("The box turned uphill in {} of them, and {} of the {} drifts at that "
+                        "step size were cut short for the box (by dmax or fix box/relax's "
+                        "vmax): the box overshoots, its mass is too small for its force; raise "
+                        "min_modify boxmass ({}), or lower fix box/relax's vmax or its target "
+                        "pressure",
+                        stall.box_uphill, stall.box_limited, stall.drifts, boxmass_scale);
+  else if (2 * stall.atoms_at_dmax > stall.drifts)
+    cause = fmt::format("The atoms turned uphill in {} of them, and {} of the {} drifts at that "
+                        "step size were cut short by min_modify dmax ({}): the timestep {} is "
+                        "beyond the stability limit of the stiffest mode (about 2/omega_max); "
+                        "lower it",
+                        stall.atoms_uphill, stall.atoms_at_dmax, stall.drifts, dmax, update->dt);
+  else
+    cause = fmt::format("The atoms turned uphill in {} of them, though only {} of the {} drifts "
+                        "at that step size ran into min_modify dmax: a force changes faster than "
+                        "even that step resolves (a very stiff or non-smooth term, as after a "
+                        "change of the system too large for one minimization, e.g. a large "
+                        "growth step); lower the timestep ({}) or make the change in smaller "
+                        "steps",
+                        stall.atoms_uphill, stall.atoms_at_dmax, stall.drifts, update->dt);
+  error->all(FLERR,
+             "min_style fire/nph: at step {} (iteration {} of this minimization) FIRE has turned "
+             "uphill {} times at its smallest time step, tmin x timestep = {}, without "
+             "recovering: the minimization cannot settle. {}. The largest force is {}",
+             update->ntimestep, niter, stall.uphill, dtmin, cause, largest_force());
+}
+
+// "<value> on atom <id> (molecule <m>)", the largest (or a non-finite) force; collective
+std::string MinFireNph::largest_force() const
+{
+  struct {
+    double value;
+    int rank;
+  } mine = {-1.0, comm->me}, largest;
+  int owner = -1;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double *f = atom->f[i];
+    double value = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    if (!std::isfinite(value)) value = INFINITY;
+    if (value > mine.value) {
+      mine.value = value;
+      owner = i;
+    }
+  }
+  MPI_Allreduce(&mine, &largest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  tagint ids[2] = {0, 0};
+  if (comm->me == largest.rank && owner >= 0) {
+    ids[0] = atom->tag[owner];
+    ids[1] = atom->molecule ? atom->molecule[owner] : 0;
+  }
+  MPI_Bcast(ids, 2, MPI_LMP_TAGINT, largest.rank, world);
+  if (largest.value < 0.0) return "on no atom";
+  std::string where = fmt::format("{} on atom {}", largest.value, ids[0]);
+  if (atom->molecule) where += fmt::format(" (molecule {})", ids[1]);
+  return where;
 }

@@ -14,6 +14,8 @@ MinimizeStyle(fire/nph,MinFireNph);
 
 #include "min.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 // FIRE damped dynamics in which the box lengths that fix box/relax exposes are dynamical
@@ -35,6 +37,7 @@ class MinFireNph : public Min {
   double boxmass_scale;    // box mass relative to that of an affine dilation
 
   double dt, dtmax, dtmin, alpha;
+  double last_drift_time;    // time of the last drift, after dmax and vmax shortened it
   bigint last_negative;
   double *velocity;    // per-atom FIRE velocities, kept by fix_minimize so they migrate
 
@@ -44,12 +47,40 @@ class MinFireNph : public Min {
   double *box_velocity;    // dq/dt
   double *box_step;        // scratch: dq/box_length, what fix box/relax min_step() takes
 
+  // a stall: FIRE keeps turning uphill at its smallest time step. Counted since dt was last
+  // back at the timestep:
+  struct StallRecord {
+    bigint uphill;           // uphill steps at dt = dtmin
+    bigint atoms_uphill;     // ... in which the atoms' own power was negative
+    bigint box_uphill;       // ... in which the box's own power was negative
+    bigint drifts;           // drifts at dt = dtmin
+    bigint atoms_at_dmax;    // ... in which an atom would have moved beyond dmax
+    bigint box_limited;      // ... shortened for the box (dmax or fix box/relax's vmax)
+  } stall;
+
+  struct Power {
+    double total, atoms, box;
+  };
+  struct Drift {
+    double time;
+    bool atoms_at_dmax;    // an atom would have moved beyond dmax in dt
+    bool box_limited;      // the box would have moved beyond dmax or vmax in dt
+  };
+
   double global_sum(double) const;
-  double vdotf() const;
+  Power vdotf() const;
   void zero_velocities();
-  void mix_velocities();
-  double displacement_time() const;
+  double mix_velocities();
+  Drift displacement_time() const;
   void move(double);
+
+  void check_energy() const;
+  void check_force_norm(double) const;
+  void check_box_move(double) const;
+  void record_stall_uphill(const Power &);
+  void record_stall_drift(const Drift &);
+  std::string largest_force() const;
+  std::string what_to_change() const;
 };
 
 }    // namespace LAMMPS_NS
