@@ -115,8 +115,14 @@ def main():
                      f"{r['wall_s']} |")
     silent = [r["case"] for r in rows if r["outcome"] == "SILENT FAILURE"]
     lines += ["", "Silent failures: " + (", ".join(silent) if silent else "none") + "."]
+    # the sections after this table (the bad-input table, written by tests/test_bad_input) stay
+    kept = ""
+    if os.path.exists(args.out):
+        text = open(args.out).read()
+        at = text.find("\n## ")
+        kept = text[at:] if at >= 0 else ""
     with open(args.out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + kept)
     print(f"wrote {args.out} and {args.csv}")
     return 1 if silent else 0
 

@@ -217,13 +217,15 @@ std::string FixDPolyCheck::geometry_problems()
   };
   double cell_area = 0.0;
   for (int c = 0; c < cells->ncells(); c++) cell_area += cells->area(c);
+  // the box is the tissue's container only where it is periodic
+  const bool container = domain->xperiodic && domain->yperiodic;
   const double phi = cell_area / (domain->xprd * domain->yprd);
-  if (outside_unit_interval(phi))
+  if (container && outside_unit_interval(phi))
     problems += fmt::format("; the packing fraction phi is outside (0, 1]: {:.6g}", phi);
   for (Compute *tissue : modify->get_compute_by_style("^dpoly/tissue$")) {
     if (tissue->invoked_vector != update->ntimestep) tissue->compute_vector();
     const double phi_patch = tissue->vector[1];    // its vector element 2
-    if (outside_unit_interval(phi_patch))
+    if (container && outside_unit_interval(phi_patch))
       problems += fmt::format("; the packing fraction phi_patch of compute {} is outside (0, 1]: "
                               "{:.6g}",
                               tissue->id, phi_patch);

@@ -290,7 +290,8 @@ int MinFireNph::iterate(int maxiter)
         dt = std::min(dt * dtgrow, dtmax);
         alpha *= alphashrink;
       }
-      if (dt >= std::max(update->dt, 2.0 * dtmin)) stall = StallRecord();
+      // recovered: dt is back at the timestep (or at tmax x timestep, if that is lower)
+      if (dt > dtmin && dt >= std::min(update->dt, dtmax)) stall = StallRecord();
     } else {
       last_negative = ntimestep;
       if (!(delaystep_start_flag && ntimestep - update->firststep <= delaystep)) {
