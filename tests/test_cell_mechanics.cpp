@@ -123,16 +123,22 @@ TEST(CellMechanics, NewtonBondOffMatchesFiniteDifferences)
 }
 
 // single() of the bond and angle styles, summed over all bonds and angles, equals compute()
+namespace {
+void expect_single_sums_match_compute(LammpsSession &s)
+{
+  s.run("compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
+        "compute esum all reduce sum c_segments inputs local\n"
+        "compute asum all reduce sum c_bends inputs local\n"
+        "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\n"
+        "run 0 post no");
+  EXPECT_NEAR(s.thermo("c_esum"), s.thermo("ebond"), 1.0e-12 * s.thermo("ebond"));
+  EXPECT_NEAR(s.thermo("c_asum"), s.thermo("eangle"), 1.0e-12 * s.thermo("eangle"));
+}
+}    // namespace
+
 TEST(CellMechanics, SingleMatchesCompute)
 {
-  auto s = deformed_tissue();
-  s->run(
-      "compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
-      "compute esum all reduce sum c_segments inputs local\n"
-      "compute asum all reduce sum c_bends inputs local\n"
-      "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
-  EXPECT_NEAR(s->thermo("c_esum"), s->thermo("ebond"), 1.0e-12 * s->thermo("ebond"));
-  EXPECT_NEAR(s->thermo("c_asum"), s->thermo("eangle"), 1.0e-12 * s->thermo("eangle"));
+  expect_single_sums_match_compute(*deformed_tissue());
 }
 
 // P = -dU/dA for an affine deformation at zero temperature; pxx = -(1/Ly) dU/dLx.
@@ -338,14 +344,7 @@ TEST(CellMechanics, UnitStiffnessFactorsChangeNothing)
 
 TEST(CellMechanics, StiffnessFactorsInSingle)
 {
-  auto s = deformed_tissue_with_factors();
-  s->run(
-      "compute segments all bond/local engpot\ncompute bends all angle/local eng\n"
-      "compute esum all reduce sum c_segments inputs local\n"
-      "compute asum all reduce sum c_bends inputs local\n"
-      "thermo_style custom step ebond eangle c_esum c_asum\nthermo_modify norm no\nrun 0 post no");
-  EXPECT_NEAR(s->thermo("c_esum"), s->thermo("ebond"), 1.0e-12 * s->thermo("ebond"));
-  EXPECT_NEAR(s->thermo("c_asum"), s->thermo("eangle"), 1.0e-12 * s->thermo("eangle"));
+  expect_single_sums_match_compute(*deformed_tissue_with_factors());
 }
 
 TEST(CellMechanics, StiffnessFactorsSurviveRestartAndDataFile)
