@@ -20,7 +20,8 @@ straight one's: the same growth steps and snapshots, bond counts, contact number
 ids exactly, the floating-point columns and vertex positions to round-off (a restart changes
 the summation order; FIRE's iteration count may differ by a few steps and is not compared).
 With --np N > 1 the runs are launched as regression.py launches them (CMake's MPIEXEC_*
-order); the kill then goes to the launcher's whole process group, so that no rank outlives it.
+order); the kill then goes to the launcher's whole process group and to every process left
+working in the run's folder, so that no rank outlives it (Linux: /proc).
 Standard library only.
 """
 import argparse
@@ -119,6 +120,30 @@ def compare(reference, folder, cells, what):
     return problems, len(rows), len(snaps), worst
 
 
+def kill_processes_in(folder):
+    """SIGKILL every process whose working directory is folder, and wait until none is left."""
+    folder = os.path.realpath(folder)
+    killed = set()
+    deadline = time.time() + 30
+    while time.time() < deadline:
+        found = False
+        for pid in os.listdir("/proc"):
+            if not pid.isdigit():
+                continue
+            try:
+                if os.path.realpath(f"/proc/{pid}/cwd") != folder:
+                    continue
+                found = True
+                os.kill(int(pid), signal.SIGKILL)
+                killed.add(pid)
+            except (FileNotFoundError, ProcessLookupError, PermissionError):
+                continue
+        if not found:
+            return len(killed)
+        time.sleep(0.05)
+    sys.exit(f"resume: processes in {folder} outlived SIGKILL for 30 s")
+
+
 def restart_step(path):
     return int(path.rsplit(".", 1)[1])
 
@@ -155,6 +180,9 @@ def main():
         if still_running:    # lmp, or the launcher and its ranks, in their own process group
             os.killpg(proc.pid, signal.SIGKILL)
         proc.wait()
+        # ranks a launcher put in a process group of their own
+        if kill_processes_in(killed):
+            print("killed processes that had outlived their launcher in the run's folder")
         if not os.path.exists(first):
             sys.exit(f"resume: the run ended (exit code {proc.returncode}) or timed out "
                      f"before writing {first}")
