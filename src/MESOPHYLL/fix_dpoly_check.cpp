@@ -25,6 +25,36 @@
 
 using namespace LAMMPS_NS;
 
+namespace {
+struct RingPoint {
+  tagint tag;
+  double x, y;
+};
+}    // namespace
+
+// every vertex of the group at its unwrapped position, on every rank (the rings are whole in
+// unwrapped coordinates: fix dpoly/cells checks it)
+class FixDPolyCheck::UnwrappedVertices {
+ public:
+  UnwrappedVertices(Atom *atom, Domain *domain, int groupbit, MPI_Comm world)
+  {
+    std::vector<RingPoint> mine;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(atom->mask[i] & groupbit)) continue;
+      double xu[3];
+      domain->unmap(atom->x[i], atom->image[i], xu);
+      mine.push_back({atom->tag[i], xu[0], xu[1]});
+    }
+    all = DPoly::gather_on_all_ranks(std::move(mine), world);
+    for (const auto &p : all) by_tag[p.tag] = &p;
+  }
+  const RingPoint &at(tagint tag) const { return *by_tag.at(tag); }
+
+ private:
+  std::vector<RingPoint> all;
+  std::unordered_map<tagint, const RingPoint *> by_tag;
+};
+
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, CHECK, 7), target_pressure(0.0), pressure_tolerance(1.0e-6),
     stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
@@ -86,8 +116,9 @@ int FixDPolyCheck::check()
       inverted++;
     }
   tagint first_tangled = 0;
-  const int tangled = tangled_cells(first_tangled);
-  const std::string geometry = geometry_problems();
+  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
+  const int tangled = tangled_cells(vertices, first_tangled);
+  const std::string geometry = geometry_problems(vertices);
 
   last[0] = converged ? 1.0 : 0.0;
   last[1] = force_norm;
@@ -137,34 +168,6 @@ int FixDPolyCheck::check()
 ------------------------------------------------------------------------- */
 
 namespace {
-struct RingPoint {
-  tagint tag;
-  double x, y;
-};
-
-// every vertex of the group at its unwrapped position, on every rank (the rings are whole in
-// unwrapped coordinates: fix dpoly/cells checks it)
-class UnwrappedVertices {
- public:
-  UnwrappedVertices(Atom *atom, Domain *domain, int groupbit, MPI_Comm world)
-  {
-    std::vector<RingPoint> mine;
-    for (int i = 0; i < atom->nlocal; i++) {
-      if (!(atom->mask[i] & groupbit)) continue;
-      double xu[3];
-      domain->unmap(atom->x[i], atom->image[i], xu);
-      mine.push_back({atom->tag[i], xu[0], xu[1]});
-    }
-    all = DPoly::gather_on_all_ranks(std::move(mine), world);
-    for (const auto &p : all) by_tag[p.tag] = &p;
-  }
-  const RingPoint &at(tagint tag) const { return *by_tag.at(tag); }
-
- private:
-  std::vector<RingPoint> all;
-  std::unordered_map<tagint, const RingPoint *> by_tag;
-};
-
 bool segments_cross(const double *a, const double *b, const double *c, const double *d)
 {
   auto side = [](const double *p, const double *q, const double *r) {
@@ -176,9 +179,8 @@ bool segments_cross(const double *a, const double *b, const double *c, const dou
 }
 }    // namespace
 
-int FixDPolyCheck::tangled_cells(tagint &first)
+int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &first)
 {
-  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
   int tangled = 0;
   first = 0;
   for (int cell = 0; cell < cells->ncells(); cell++) {
@@ -209,7 +211,7 @@ int FixDPolyCheck::tangled_cells(tagint &first)
    evaluation with one, so this sees one only where that check was bypassed.
 ------------------------------------------------------------------------- */
 
-std::string FixDPolyCheck::geometry_problems()
+std::string FixDPolyCheck::geometry_problems(const UnwrappedVertices &vertices)
 {
   std::string problems;
   auto outside_unit_interval = [](double phi) {
@@ -231,7 +233,6 @@ std::string FixDPolyCheck::geometry_problems()
                               tissue->id, phi_patch);
   }
 
-  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
   const double half_box[2] = {0.5 * domain->xprd, 0.5 * domain->yprd};
   const int periodic[2] = {domain->xperiodic, domain->yperiodic};
   int too_long = 0;

@@ -36,9 +36,11 @@ class FixDPolyCheck : public FixDPolyStage {
   bigint minima;
   // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force evaluations
   double last[7];
-  int check();    // the number of problems found
-  int tangled_cells(tagint &first);
-  std::string geometry_problems();    // "; ..." for each impossible geometry, "" if none
+  int check();                // the number of problems found
+  class UnwrappedVertices;    // every vertex on every rank, gathered once per check
+  int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
+  // "; ..." for each impossible geometry, "" if none
+  std::string geometry_problems(const UnwrappedVertices &vertices);
 };
 
 }    // namespace LAMMPS_NS
