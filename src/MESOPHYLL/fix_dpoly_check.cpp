@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "compute.h"
 #include "domain.h"
+#include "dpoly_measure.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -225,7 +226,7 @@ std::string FixDPolyCheck::geometry_problems(const UnwrappedVertices &vertices)
   if (container && outside_unit_interval(phi))
     problems += fmt::format("; the packing fraction phi is outside (0, 1]: {:.6g}", phi);
   for (Compute *tissue : modify->get_compute_by_style("^dpoly/tissue$")) {
-    if (tissue->invoked_vector != update->ntimestep) tissue->compute_vector();
+    DPoly::evaluate_global(tissue);    // the hub has, before the stages: then no work here
     const double phi_patch = tissue->vector[1];    // its vector element 2
     if (container && outside_unit_interval(phi_patch))
       problems += fmt::format("; the packing fraction phi_patch of compute {} is outside (0, 1]: "
