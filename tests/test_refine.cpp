@@ -134,6 +134,25 @@ TEST(Refine, CapLimitsEachCell)
   EXPECT_EQ(s->natoms(), 24) << "the cap holds over later refinements";
 }
 
+// 'start 2' skips the first minimum (a development's relaxed tissue, before any growth), counts
+// it, and splits from the second on; the count travels with restart files.
+TEST(Refine, StartSkipsTheFirstPasses)
+{
+  auto s = relaxed_ring("fix refine all dpoly/refine start 2");
+  EXPECT_EQ(s->natoms(), 16) << "the first pass adds nothing";
+  EXPECT_EQ(s->thermo("f_refine[3]"), 1.0) << "but counts";
+  const std::string restart = scratch("refine_start.restart");
+  s->run("write_restart " + restart);
+  s->run("minimize 0.0 1.0e-13 10000 100000");
+  EXPECT_EQ(s->natoms(), 32) << "the second pass splits all 16 segments";
+
+  LammpsSession resumed;
+  resumed.run(resume_commands(restart) +
+              "fix refine all dpoly/refine start 2\nthermo_style custom step pe\n"
+              "thermo_modify norm no\nminimize 0.0 1.0e-13 10000 100000");
+  EXPECT_EQ(resumed.natoms(), 32) << "a resumed run knows the first pass is done";
+}
+
 // Only segments between two void-facing vertices split (default); 'void no' splits any.
 TEST(Refine, VoidRuleSparesBondedVertices)
 {
@@ -583,6 +602,7 @@ TEST_F(BadRefine, SaysWhatIsWrong)
               HasSubstr("rules must be 'tension', 'published' or 'consistent', got 'code'"));
   EXPECT_THAT(error_of("fix r all dpoly/refine rules published void no"),
               HasSubstr("void applies to rules tension"));
+  EXPECT_THAT(error_of("fix r all dpoly/refine start 0"), HasSubstr("start must be >= 1, got 0"));
   EXPECT_THAT(error_of("fix r all dpoly/refine timing early"),
               HasSubstr("timing must be 'before_growth' or 'after_growth'"));
   EXPECT_THAT(error_of("fix r all dpoly/refine rules published"), HasSubstr("define d_kl with"));

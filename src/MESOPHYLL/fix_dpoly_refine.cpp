@@ -25,8 +25,8 @@ using DPoly::RefinePlan;
 using DPoly::SegmentSplit;
 
 FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, REFINE, 3), rules_name("tension"), steps(0), added_total(0),
-    added_last(0)
+    FixDPolyStage(lmp, narg, arg, REFINE, 3), rules_name("tension"), steps(0), start(1),
+    added_total(0), added_last(0)
 {
   DPoly::RefineRules::Settings settings = {3.0, 5.0, true};
   bool void_given = false;
@@ -50,9 +50,12 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
     } else if (strcmp(key, "void") == 0) {
       settings.void_only = utils::logical(FLERR, value, false, lmp);
       void_given = true;
-    } else if (strcmp(key, "timing") == 0)
+    } else if (strcmp(key, "timing") == 0) {
       timing = one_of(key, value, "before_growth", "after_growth");
-    else
+    } else if (strcmp(key, "start") == 0) {
+      start = utils::bnumeric(FLERR, value, false, lmp);
+      if (start < 1) error->all(FLERR, "Fix dpoly/refine start must be >= 1, got {}", value);
+    } else
       return false;
     return true;
   });
@@ -92,6 +95,17 @@ int FixDPolyRefine::act()
   if (initial_vertices.empty())
     for (int c = 0; c < cells->ncells(); c++)
       initial_vertices[cells->cell_id(c)] = cells->vertex_count(c);
+
+  // passes before 'start' count but add nothing (the published code's first insertion follows
+  // the first growth step; the first minimum of a development is the relaxed tissue before it)
+  if (steps + 1 < start) {
+    steps++;
+    added_last = 0;
+    if (comm->me == 0)
+      utils::logmesg(lmp, "fix dpoly/refine: step {}: none added before step {}, {} in all\n",
+                     steps, start, added_total);
+    return NOTHING;
+  }
 
   std::vector<DPoly::AdhesiveBond> bonds;
   const DPoly::RefineTable table = gather_table(bonds);

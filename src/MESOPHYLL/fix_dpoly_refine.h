@@ -43,7 +43,9 @@ class FixDPolyRefine : public FixDPolyStage {
 
   std::string rules_name;
   std::unique_ptr<DPoly::RefineRules> rules;
-  bigint steps, added_total;
+  bigint steps;          // refinement passes so far
+  bigint start;          // the first pass that may add vertices
+  bigint added_total;    // vertices added in all
   int added_last;
   std::map<tagint, int> initial_vertices;    // per cell, at the first refinement
 };
