@@ -224,6 +224,32 @@ class Rasterize(unittest.TestCase):
         self.assertIn("segment", source2)
         np.testing.assert_allclose(f2.sigma(0.5)[0], 0.5)
 
+    def test_smooth_outline(self):
+        # a 24-gon (radius 1) with touching vertex disks (diameter = segment length), across
+        # the periodic corner, and a second cell touching it: the disks' outline is scalloped
+        # (calA near 1.8 for 1.004 of the envelope), closing by the diameter fills most of the
+        # scallops (calA 1.06-1.07, within 0.01 at two pixel sizes), takes no pixel from the
+        # other cell and keeps the contact
+        s = 2 * np.sin(np.pi / 24)
+        ring = np.mod(vh.regular_ring(24, 1.0, (5.6, 3.7)), [6.0, 4.0])
+        other = vh.regular_ring(24, 1.0, (5.6 - 2.0 - s, 3.7))
+        f = self.frame([(ring, {"d_sigma": s}), (other, {"d_sigma": s})], hi=(6.0, 4.0))
+        polys, sig, labs, _, _ = im.frame_cells(f)
+        calA = {}
+        for px in (0.01, 0.02):
+            disks = im.rasterize(polys, sig, labs, f.lo, f.length, px, outline="disks")
+            smooth = im.close_cells(disks, s / px)
+            self.assertTrue((smooth[disks > 0] == disks[disks > 0]).all())
+            self.assertGreater((smooth > 0).sum(), (disks > 0).sum())
+            for name, lab in (("disks", disks), ("smooth", smooth)):
+                m = im.measure_labels(lab, px, periodic=True, pores=False)
+                calA[name, px] = m["cells"][0]["calA"]
+                self.assertEqual([c["z"] for c in m["cells"]], [1, 1])
+        for px in (0.01, 0.02):
+            self.assertGreater(calA["disks", px], 1.6)
+            self.assertLess(abs(calA["smooth", px] - 1.065), 0.02)
+        self.assertLess(abs(calA["smooth", 0.01] - calA["smooth", 0.02]), 0.01)
+
     def test_bonds_count_in_z(self):
         rings = [vh.regular_ring(8, 1.0, (2.0, 4.0)), vh.regular_ring(8, 1.0, (5.0, 4.0))]
         f = self.frame([(ring, {"d_sigma": 0.1}) for ring in rings])

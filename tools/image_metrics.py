@@ -2,7 +2,8 @@
 """Measure tissue images as the paper measures micrographs (binarize, segment, p^2/(4 pi a) per cell).
 
     image_metrics.py cells.N64.dump [--growth growth.N64.txt] [--bonds bonds.N64.dump]
-                     [--frame K] [--pixel 0.01] [--outline disks|polygon] [--save-labels F.tif]
+                     [--frame K] [--pixel 0.01] [--outline disks|smooth|polygon] [--close R]
+                     [--save-labels F.tif]
                      [--plot F.png] [--csv F.csv]
     image_metrics.py --image micrograph.png [--pixel-size 0.5] [--periodic] [--binary]
                      [--touch-gap PIXELS] [--plot F.png] [--csv F.csv]
@@ -11,7 +12,10 @@
 (a) A simulated frame (one frame of the run's dump; default the last) is rasterized into a label
     image at the chosen pixel size: each cell its molecule ID, air 0; a cell is its polygon and,
     with --outline disks (default), the disks of its vertices (diameter d_sigma; see --sigma when
-    the dump has no d_sigma column); the periodic box is one image, cells that cross its edges
+    the dump has no d_sigma column); --outline smooth closes each cell (dilation and erosion by
+    --close, default the median vertex diameter, taking air pixels only), which fills most of
+    the scallops between the disks that a micrograph's smooth walls do not have, and makes calA
+    nearly independent of the pixel size; the periodic box is one image, cells that cross its edges
     wrap around. Pixels that two cells claim go to the cell whose polygon holds them, else to the
     nearest vertex disk (distance over radius).
 (b) Any label image is measured with scikit-image: per cell its area, perimeter (estimator
@@ -121,6 +125,36 @@ def rasterize(polygons, sigmas, labels, lo, length, pixel, outline="disks"):
     new = owner[safe[np.arange(len(best)), best]]
     image[rows[got], cols[got]] = new[got]
     return image
+
+
+def close_cells(labels, radius):
+    """Each cell's region closed (dilation then erosion) by a disk of `radius` pixels, the
+    pixels it gains taken from the air only: fills the scallops between vertex disks, as a
+    microscope sees a smooth cell wall. The image is periodic (tiled 3 x 3 to close the cells
+    that cross its edges whole)."""
+    R = int(np.ceil(radius))
+    if radius <= 0:
+        return labels.copy()
+    ny, nx = labels.shape
+    tile = np.tile(labels, (3, 3))
+    pieces = measure.label(tile, background=0, connectivity=2)
+    out = labels.copy()
+    for reg in measure.regionprops(pieces):
+        cy, cx = reg.centroid
+        if not (ny <= cy < 2 * ny and nx <= cx < 2 * nx):
+            continue
+        r0, c0, r1, c1 = reg.bbox
+        mask = np.pad(reg.image, R + 1)
+        # Euclidean dilation then erosion by the radius, from distance transforms
+        grown = ndimage.distance_transform_edt(~mask) <= radius
+        closed = ndimage.distance_transform_edt(grown) > radius
+        rr, cc = np.nonzero(closed & ~mask)
+        rr = (rr + r0 - R - 1) % ny
+        cc = (cc + c0 - R - 1) % nx
+        lab = tile[reg.coords[0, 0], reg.coords[0, 1]]
+        air = out[rr, cc] == 0
+        out[rr[air], cc[air]] = lab
+    return out
 
 
 def frame_cells(frame, sigma_default=None):
@@ -274,9 +308,10 @@ def local_thickness(pore, periodic=False, tolerance=0.03):
     return np.where(pore, thick, 0.0)
 
 
-def measure_labels(labels, pixel=1.0, periodic=False, estimator="crofton4", touch_gap=0):
+def measure_labels(labels, pixel=1.0, periodic=False, estimator="crofton4", touch_gap=0,
+                   pores=True):
     """Per-cell and whole-image measurements of a label image (air 0); lengths in units of
-    `pixel` (the side of one pixel)."""
+    `pixel` (the side of one pixel). pores=False leaves out the local thickness."""
     regions = cell_regions(labels, periodic)
     nb = touching(labels, periodic, touch_gap)
     cells = []
@@ -288,7 +323,7 @@ def measure_labels(labels, pixel=1.0, periodic=False, estimator="crofton4", touc
                       "calA": perim ** 2 / (4 * np.pi * area), "z": len(nb.get(lab, ())),
                       "edge": bool(edge)})
     pore = labels == 0
-    thick = local_thickness(pore, periodic) * pixel
+    thick = local_thickness(pore, periodic) * pixel if pores else np.zeros(pore.shape)
     values = thick[pore]
     return {"cells": cells, "porosity": float(pore.mean()), "thickness": thick,
             "pore_thickness": values, "pixel": pixel, "estimator": estimator,
@@ -541,8 +576,12 @@ def main(argv=None):
     p.add_argument("--adhesion-type", type=int, default=2, help="bond type of adhesion (2)")
     p.add_argument("--pixel", type=float, default=None,
                    help="pixel size in simulation units (default: box / 800)")
-    p.add_argument("--outline", choices=("disks", "polygon"), default="disks",
-                   help="a cell is its polygon plus its vertex disks (default) or the polygon")
+    p.add_argument("--outline", choices=("disks", "smooth", "polygon"), default="disks",
+                   help="a cell is its polygon plus its vertex disks (default), the same closed "
+                        "by a disk of radius --close (smooth: most of the scallops between the "
+                        "vertex disks filled), or its polygon")
+    p.add_argument("--close", type=float, default=None,
+                   help="closing radius of --outline smooth (default: the median d_sigma)")
     p.add_argument("--sigma", type=float, default=None,
                    help="vertex diameter where the dump has no d_sigma column (default: each "
                         "vertex's mean segment length)")
@@ -592,8 +631,12 @@ def main(argv=None):
             print(f"note: {a.bonds} has no frame at step {frame.timestep}; z without bonds")
     polys, sig, labs, sigma, source = frame_cells(frame, a.sigma)
     pixel = a.pixel or float(frame.length.min()) / 800
-    labels = rasterize(polys, sig, labs, frame.lo, frame.length, pixel, a.outline)
+    labels = rasterize(polys, sig, labs, frame.lo, frame.length, pixel,
+                       "polygon" if a.outline == "polygon" else "disks")
     _, px = raster_grid(frame.lo, frame.length, pixel)
+    close = a.close if a.close is not None else float(np.median(sigma))
+    if a.outline == "smooth":
+        labels = close_cells(labels, close / float(px[0]))
     img = measure_labels(labels, float(px[0]), True, a.estimator, a.touch_gap)
     sim = simulation_values(frame, sigma, bonds, a.adhesion_type)
     growth_row = None
@@ -604,12 +647,16 @@ def main(argv=None):
     print(f"{a.dump}: frame {k} (timestep {frame.timestep}), {len(labs)} cells, box "
           f"{frame.length[0]:.4g} x {frame.length[1]:.4g}, pixel {px[0]:.4g} "
           f"({labels.shape[1]} x {labels.shape[0]}), outline {a.outline}")
-    notes = [f"vertex diameters: {source}" if a.outline == "disks" else
+    notes = [f"vertex diameters: {source}" if a.outline != "polygon" else
              "cells rasterized as their polygons (no vertex disks)",
              "simulation z: other cells with an overlapping vertex pair"
              + (" or an adhesive bond" if sim["bonds"] else " (no bond dump: bonds not counted)"),
              "image z: distinct labels touching (4-neighbour pixels)"]
-    if a.outline == "disks":
+    if a.outline == "smooth":
+        notes.append("outline smooth: polygon and disks, each cell closed by a disk of radius "
+                     f"{close:.4g}" + (" (--close)" if a.close is not None else
+                                       " (the median vertex diameter)"))
+    if a.outline != "polygon":
         notes.append("the image cells include their vertex disks, so their areas and perimeters "
                      "are larger than the polygons'")
     print_table(img, sim, growth_row, notes)
