@@ -13,7 +13,7 @@
     image at the chosen pixel size: each cell its molecule ID, air 0; a cell is its polygon and,
     with --outline disks (default), the disks of its vertices (diameter d_sigma; see --sigma when
     the dump has no d_sigma column); --outline smooth closes each cell (dilation and erosion by
-    --close, default the median vertex diameter, taking air pixels only), which fills most of
+    --close, default the median vertex radius, taking air pixels only), which fills most of
     the scallops between the disks that a micrograph's smooth walls do not have, and makes calA
     nearly independent of the pixel size; the periodic box is one image, cells that cross its edges
     wrap around. Pixels that two cells claim go to the cell whose polygon holds them, else to the
@@ -581,7 +581,8 @@ def main(argv=None):
                         "by a disk of radius --close (smooth: most of the scallops between the "
                         "vertex disks filled), or its polygon")
     p.add_argument("--close", type=float, default=None,
-                   help="closing radius of --outline smooth (default: the median d_sigma)")
+                   help="closing radius of --outline smooth (default: the median vertex "
+                        "radius, d_sigma / 2)")
     p.add_argument("--sigma", type=float, default=None,
                    help="vertex diameter where the dump has no d_sigma column (default: each "
                         "vertex's mean segment length)")
@@ -634,7 +635,7 @@ def main(argv=None):
     labels = rasterize(polys, sig, labs, frame.lo, frame.length, pixel,
                        "polygon" if a.outline == "polygon" else "disks")
     _, px = raster_grid(frame.lo, frame.length, pixel)
-    close = a.close if a.close is not None else float(np.median(sigma))
+    close = a.close if a.close is not None else 0.5 * float(np.median(sigma))
     if a.outline == "smooth":
         labels = close_cells(labels, close / float(px[0]))
     img = measure_labels(labels, float(px[0]), True, a.estimator, a.touch_gap)
@@ -655,7 +656,7 @@ def main(argv=None):
     if a.outline == "smooth":
         notes.append("outline smooth: polygon and disks, each cell closed by a disk of radius "
                      f"{close:.4g}" + (" (--close)" if a.close is not None else
-                                       " (the median vertex diameter)"))
+                                       " (the median vertex radius)"))
     if a.outline != "polygon":
         notes.append("the image cells include their vertex disks, so their areas and perimeters "
                      "are larger than the polygons'")
