@@ -2,105 +2,121 @@
 """Draw a MESOPHYLL development run: what examples/mesophyll/in.mesophyll writes.
 
     plot_mesophyll.py growth.N64.txt cells.N64.dump [--phi 0.9 0.7 0.5] [--out mesophyll]
+                      [--P0 1e-3] [--sigma S] [--no-disks]
 
 Writes three PNGs next to --out:
   <out>_shape.png      mean calA against phi_max - phi_patch (phi_max = 0.975, as the paper)
-  <out>_packing.png    phi, phi_patch and P against growth step
+  <out>_packing.png    phi and phi_patch against growth step, and |P/P0 - 1| on a log axis
+                       (P0 = --P0; a deviation of exactly 0 is drawn at 1e-13)
   <out>_snapshots.png  the tissue at the minima whose phi_patch is nearest each --phi value:
-                       cells filled and coloured by calA, the periodic box drawn
+                       cells filled and coloured by calA with their vertex disks (diameter from
+                       the dump's d_sigma column; without it --sigma or each vertex's mean
+                       segment length), the periodic box drawn
 The growth file has one line per growth step (step P phi phi_patch calA z bonds dphi_plus
 iterations); the dump has one frame per growth step with columns id mol xu yu c_vertex[3], the
-last being the next vertex along each ring. Needs python3-numpy and python3-matplotlib.
+last being the next vertex along each ring, and optionally d_sigma and other per-vertex columns.
+Needs python3-numpy and python3-matplotlib.
 """
 import argparse
+import os
+import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesophyll_frames as mf  # noqa: E402
+
+mf.require(["numpy", "matplotlib"])
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.collections import EllipseCollection, PolyCollection  # noqa: E402
 
 PHI_MAX = 0.975
+P_FLOOR = 1e-13      # |P/P0 - 1| drawn here when it is 0 to the growth table's 12 digits
+
+read_growth = mf.read_growth
+read_frames = mf.read_frames
+shape_parameter = mf.shape_parameter
 
 
-def read_growth(path):
-    with open(path) as f:
-        names = f.readline().lstrip("#").split()
-    data = np.loadtxt(path, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(names)}
+def pressure_deviation(P, P0):
+    """|P/P0 - 1|, with exact zeros raised to P_FLOOR (for a log axis)."""
+    return np.maximum(np.abs(np.asarray(P) / P0 - 1.0), P_FLOOR)
 
 
-def read_frames(path):
-    """Yield (box lo, box length, {atom id: (mol, x, y, next id)}) for every dump frame."""
-    with open(path) as f:
-        lines = iter(f.read().splitlines())
-    for line in lines:
-        if not line.startswith("ITEM: TIMESTEP"):
-            continue
-        next(lines)
-        next(lines)
-        natoms = int(next(lines))
-        next(lines)
-        bounds = [list(map(float, next(lines).split()[:2])) for _ in range(3)]
-        columns = next(lines).split()[2:]
-        col = {name: k for k, name in enumerate(columns)}
-        atoms = {}
-        for _ in range(natoms):
-            w = next(lines).split()
-            atoms[int(w[col["id"]])] = (int(w[col["mol"]]), float(w[col["xu"]]),
-                                        float(w[col["yu"]]), int(float(w[col["c_vertex[3]"]])))
-        lo = np.array([bounds[0][0], bounds[1][0]])
-        length = np.array([bounds[0][1] - bounds[0][0], bounds[1][1] - bounds[1][0]])
-        yield lo, length, atoms
+def draw_pressure(ax, steps, P, P0, **style):
+    ax.semilogy(steps, pressure_deviation(P, P0), **style)
+    ax.set_ylabel(r"$|P/P_0 - 1|$")
+    ax.set_ylim(bottom=P_FLOOR / 2)
 
 
-def rings(atoms):
-    """Each cell's vertices in ring order, as an (n, 2) array of unwrapped positions."""
-    by_cell = {}
-    for tag, (mol, _, _, _) in atoms.items():
-        by_cell.setdefault(mol, tag)
-    polygons = []
-    for start in by_cell.values():
-        order, tag = [], start
-        while True:
-            order.append(atoms[tag][1:3])
-            tag = atoms[tag][3]
-            if tag == start or len(order) > len(atoms):
-                break
-        polygons.append(np.array(order))
-    return polygons
+def periodic_shifts(poly, radius, lo, length):
+    """Shifts (multiples of the box) of the periodic images of a cell that reach into the box."""
+    a, b = poly.min(axis=0) - radius, poly.max(axis=0) + radius
+    out = []
+    for dx in (-1, 0, 1):
+        for dy in (-1, 0, 1):
+            s = np.array([dx, dy]) * length
+            if (a + s < lo + length).all() and (b + s > lo).all():
+                out.append(s)
+    return out
 
 
-def shape_parameter(poly):
-    x, y = poly[:, 0], poly[:, 1]
-    area = 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)
-    perimeter = np.sum(np.hypot(np.roll(x, -1) - x, np.roll(y, -1) - y))
-    return perimeter ** 2 / (4 * np.pi * area)
+def draw_tissue(ax, lo, length, polygons, norm, cmap, sigmas=None, colours=None, scaled=False,
+                edge=0.3, limits=None):
+    """Each cell and its periodic images that reach into the box, clipped to the box; with
+    sigmas (one array of diameters per cell) also its vertex disks, in the cell's colour.
 
-
-def draw_tissue(ax, lo, length, polygons, norm, cmap):
-    """Each cell and its periodic images that reach into the box, clipped to it."""
-    shapes, colours = [], []
-    for poly in polygons:
-        centre = poly.mean(axis=0)
-        shift = np.floor((centre - lo) / length) * length    # bring the cell into the box
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                shapes.append(poly - shift + np.array([dx, dy]) * length)
-                colours.append(shape_parameter(poly))
-    cells = PolyCollection(shapes, array=np.array(colours), cmap=cmap, norm=norm,
-                           edgecolors="k", linewidths=0.3)
-    ax.add_collection(cells)
-    box = plt.Rectangle(lo, length[0], length[1], fill=False, edgecolor="k", linewidth=1.2)
+    scaled: draw in box units ((x - lo) / length: the tissue frame, a box that stays put);
+    colours: each cell's value for the colour map (default its shape parameter)."""
+    lo, length = np.asarray(lo, dtype=float), np.asarray(length, dtype=float)
+    if colours is None:
+        colours = [shape_parameter(p) for p in polygons]
+    shapes, values, centres, widths, heights, disk_values = [], [], [], [], [], []
+    for k, poly in enumerate(polygons):
+        radius = 0.5 * float(np.max(sigmas[k])) if sigmas is not None else 0.0
+        for s in periodic_shifts(poly, radius, lo, length):
+            xy = poly + s
+            if scaled:
+                xy = (xy - lo) / length
+            shapes.append(xy)
+            values.append(colours[k])
+            if sigmas is not None:
+                centres.append(xy)
+                d = np.asarray(sigmas[k], dtype=float)
+                widths.append(d / length[0] if scaled else d)
+                heights.append(d / length[1] if scaled else d)
+                disk_values.append(np.full(len(xy), colours[k]))
+    blo, blen = (np.zeros(2), np.ones(2)) if scaled else (lo, length)
+    box = plt.Rectangle(blo, blen[0], blen[1], fill=False, edgecolor="k", linewidth=1.2,
+                        zorder=3)
     ax.add_patch(box)
+    cells = PolyCollection(shapes, array=np.array(values), cmap=cmap, norm=norm,
+                           edgecolors="k", linewidths=edge, zorder=2)
+    ax.add_collection(cells)
     cells.set_clip_path(box)
-    ax.set_xlim(lo[0], lo[0] + length[0])
-    ax.set_ylim(lo[1], lo[1] + length[1])
+    if sigmas is not None and centres:
+        disks = EllipseCollection(np.concatenate(widths), np.concatenate(heights),
+                                  np.zeros(sum(len(c) for c in centres)), units="xy",
+                                  offsets=np.vstack(centres), offset_transform=ax.transData,
+                                  array=np.concatenate(disk_values), cmap=cmap, norm=norm,
+                                  edgecolors="k", linewidths=0.15 * edge, zorder=1)
+        ax.add_collection(disks)
+        disks.set_clip_path(box)
+    if limits is None:
+        limits = (blo[0], blo[0] + blen[0], blo[1], blo[1] + blen[1])
+    ax.set_xlim(limits[0], limits[1])
+    ax.set_ylim(limits[2], limits[3])
     ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
     return cells
+
+
+def frame_sigmas(frame, default=None):
+    sigma, source = frame.sigma(default)
+    return [sigma[r] for r in frame.rings], source
 
 
 def main():
@@ -110,6 +126,12 @@ def main():
     p.add_argument("--phi", type=float, nargs="+", default=[0.9, 0.7, 0.5],
                    help="phi_patch of the snapshots (nearest minimum)")
     p.add_argument("--out", default="mesophyll", help="prefix of the PNG files")
+    p.add_argument("--P0", type=float, default=1.0e-3,
+                   help="target pressure of the run (default 1e-3, the main run's)")
+    p.add_argument("--sigma", type=float, default=None,
+                   help="vertex diameter where the dump has no d_sigma column (default: each "
+                        "vertex's mean segment length)")
+    p.add_argument("--no-disks", action="store_true", help="draw the polygons only")
     args = p.parse_args()
 
     g = read_growth(args.growth)
@@ -126,10 +148,10 @@ def main():
     top.plot(g["step"], g["phi"], "s-", ms=3, label=r"$\phi$ polygons")
     top.set_ylabel(r"$\phi$")
     top.legend()
-    bottom.plot(g["step"], g["P"], "o-", ms=3)
+    draw_pressure(bottom, g["step"], g["P"], args.P0, marker="o", ms=3)
     bottom.set_xlabel("growth step")
-    bottom.set_ylabel("P at the minimum")
-    bottom.ticklabel_format(axis="y", useOffset=False)
+    bottom.set_title(f"pressure at the minimum ($P_0$ = {args.P0:g}; "
+                     f"0 drawn at {P_FLOOR:g})", fontsize=8)
     fig.tight_layout()
     fig.savefig(f"{args.out}_packing.png", dpi=150)
 
@@ -138,12 +160,17 @@ def main():
     fig, axes = plt.subplots(1, len(chosen), figsize=(3.2 * len(chosen) + 0.8, 3.4))
     axes = np.atleast_1d(axes)
     norm = matplotlib.colors.Normalize(vmin=1.0, vmax=max(3.0, float(g["calA"].max())))
+    source = None
     for ax, k in zip(axes, chosen):
-        lo, length, atoms = frames[k]
-        cells = draw_tissue(ax, lo, length, rings(atoms), norm, "viridis")
+        frame = frames[k]
+        sigmas, source = frame_sigmas(frame, args.sigma)
+        cells = draw_tissue(ax, frame.lo, frame.length, frame.polygons(), norm, "viridis",
+                            sigmas=None if args.no_disks else sigmas)
         ax.set_title(f"step {int(g['step'][k])}, " + r"$\phi$" + f" = {g['phi_patch'][k]:.2f}")
     fig.colorbar(cells, ax=axes.tolist(), label=r"$\mathcal{A}$", shrink=0.8)
     fig.savefig(f"{args.out}_snapshots.png", dpi=150)
+    if not args.no_disks:
+        print(f"vertex disks: {source}")
     print(f"wrote {args.out}_shape.png, {args.out}_packing.png, {args.out}_snapshots.png")
 
 

@@ -57,7 +57,8 @@ tarballs=(
 
 packages=(build-essential cmake ninja-build ccache git libopenmpi-dev openmpi-bin libeigen3-dev
           libgtest-dev libgmock-dev libyaml-dev librandom123-dev libspectra-dev
-          python3 python3-numpy python3-matplotlib xz-utils ca-certificates)
+          python3 python3-numpy python3-matplotlib python3-scipy python3-skimage python3-vtk9
+          ffmpeg xz-utils ca-certificates)
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
