@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tools on a real run: examples/mesophyll/in.mesophyll_short (16 cells, 3 growth steps) in a
-scratch copy, once as shipped and once with the per-vertex columns and the bond dump the tools
-can use (the input's write_dump line extended, two computes added). The cells read from the
+scratch copy, once with the plain dump (positions and ring order) and once with the shipped
+per-vertex columns and a bond dump the tools can use (a local dump and its compute added). The cells read from the
 dump must give the growth table's phi and mean calA (compute dpoly/tissue's values at the
 minimum, printed to 6 digits), the rasterized polygons the same to pixel accuracy, and, with
 the bonds, the same mean contact number z.
@@ -29,12 +29,13 @@ import image_metrics as im  # noqa: E402
 import mesophyll_frames as mf  # noqa: E402
 import write_vtk  # noqa: E402
 
-COMPUTES = ("compute         adhesion all dpoly/adhesion\n"
-            "compute         bonds all property/local batom1 batom2 btype\n")
-DUMPS = ("write_dump      all custom cells.N${N}.dump id mol xu yu c_vertex[3] d_sigma d_l0 "
-         "d_theta0 d_a0 c_adhesion modify append yes\n"
-         "write_dump      all local bonds.N${N}.dump index c_bonds[1] c_bonds[2] c_bonds[3] "
-         "modify append yes\n")
+COMPUTES = "compute         bonds all property/local batom1 batom2 btype\n"
+PLAIN = "write_dump      all custom cells.N${N}.dump id mol xu yu c_vertex[3] modify append yes\n"
+BOND_DUMP = ("write_dump      all local bonds.N${N}.dump index c_bonds[1] c_bonds[2] c_bonds[3] "
+             "modify append yes\n")
+# the cells' write_dump command, continuation lines ('&') included
+DUMP_LINE = re.compile(r"^write_dump\s+all custom cells\.N\$\{N\}\.dump(?:[^\n]*&\n)*[^\n]*\n",
+                       re.M)
 
 failures = []
 
@@ -45,17 +46,19 @@ def check(ok, text):
         failures.append(text)
 
 
-def extend_input(path):
-    """Add the per-vertex columns and the bond dump to a copy of in.mesophyll."""
+def edit_input(path, extended):
+    """A copy of in.mesophyll with the plain dump (positions and ring order only), or with the
+    shipped per-vertex columns and a second, local dump of the bonds."""
     with open(path) as f:
         text = f.read()
-    line = re.search(r"^write_dump\s+all custom cells\.N\$\{N\}\.dump[^\n]*\n", text, re.M)
-    if line is None:
-        raise SystemExit(f"{path}: no 'write_dump all custom cells.N${{N}}.dump' line")
-    if "d_sigma" not in line.group(0):
-        text = text[:line.start()] + DUMPS + text[line.end():]
-    if "dpoly/adhesion" not in text:
+    line = DUMP_LINE.search(text)
+    if line is None or "d_sigma" not in line.group(0):
+        raise SystemExit(f"{path}: no 'write_dump all custom cells.N${{N}}.dump ... d_sigma' line")
+    if extended:
+        text = text[:line.end()] + BOND_DUMP + text[line.end():]
         text = re.sub(r"^(label\s+growth\s*)$", COMPUTES + r"\1", text, count=1, flags=re.M)
+    else:
+        text = text[:line.start()] + PLAIN + text[line.end():]
     with open(path, "w") as f:
         f.write(text)
 
@@ -69,7 +72,7 @@ def run_lammps(lmp, folder):
 
 
 def check_run(folder, extended):
-    tag = "extended dump" if extended else "dump as shipped"
+    tag = "extended dump" if extended else "plain dump"
     growth = mf.read_growth(os.path.join(folder, "growth.N16.txt"))
     frames = list(mf.read_frames(os.path.join(folder, "cells.N16.dump")))
     check(len(frames) == len(growth["step"]) == 3, f"{tag}: 3 frames, 3 growth rows")
@@ -137,8 +140,7 @@ def main():
         for extended in (False, True):
             folder = os.path.join(tmp, "extended" if extended else "plain")
             shutil.copytree(a.example, folder)
-            if extended:
-                extend_input(os.path.join(folder, "in.mesophyll"))
+            edit_input(os.path.join(folder, "in.mesophyll"), extended)
             run_lammps(os.path.abspath(a.lmp), folder)
             check_run(folder, extended)
     print(f"{len(failures)} failed" if failures else "all checks passed")
