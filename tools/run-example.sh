@@ -67,4 +67,13 @@ for growth in growth.N*.txt; do
   fi
   "$python" "$here/tools/plot_mesophyll.py" "$growth" "cells.$cells.dump" --out "mesophyll_$cells"
   echo "Growth record: $work/$growth; plots: $work/mesophyll_${cells}_{shape,packing,snapshots}.png"
+  # the movie (ffmpeg, python3-matplotlib) and the ParaView series (python3-vtk9): each tool
+  # says what it misses, and the run stays a success without them
+  if "$python" "$here/tools/make_movie.py" "$growth" "cells.$cells.dump" --out "mesophyll_$cells"; then
+    echo "Movie: $work/mesophyll_$cells.mp4 and .gif"
+  fi
+  if "$python" "$here/tools/write_vtk.py" "cells.$cells.dump" --growth "$growth" \
+       --out "vtk/$cells" >/dev/null; then
+    echo "ParaView: open $work/vtk/${cells}_cells.pvd"
+  fi
 done
