@@ -66,14 +66,18 @@ def run(lmp, tissue, refine, steps, phi_stop, workdir):
     result = mesophyll_run.run(lmp, patched_input(workdir), workdir,
                                {"N": 16, "steps": steps, "phi_stop": phi_stop,
                                 "refine": 3 if refine == "consistent" else 0,
-                                "restart_every": 0}, example=None)
+                                "restart_every": 0}, example=None, check=False)
     record = {k: np.array(v) for k, v in result.growth[16].items()}
+    # a run that stopped with an error keeps the growth steps it recorded
+    errors_ = [line for line in result.log.splitlines() if line.startswith("ERROR")]
+    record["error"] = errors_[0][:120] if errors_ else ""
     record["wall"] = sum(loop.seconds for loop in result.loops)
     record["cpu"] = sum(loop.seconds * (loop.cpu or 1.0) for loop in result.loops)
     record["iterations"] = sum(iterations for iterations, _ in result.minimizations)
     record["failures"] = len(result.failures)
-    record["vertices_end"] = len(resample_tissue.read_sections(
-        os.path.join(workdir, "grown.data"))[1]["Atoms"])
+    grown = os.path.join(workdir, "grown.data")
+    record["vertices_end"] = len(resample_tissue.read_sections(grown)[1]["Atoms"]) \
+        if os.path.exists(grown) else ""
     return record
 
 
@@ -128,7 +132,7 @@ def main():
                                              os.path.join(root, f"n{n}_{refine}"))
                 print(f"n {n:3d} {refine:10s} steps {len(r['step']):3d} phi_patch "
                       f"{r['phi_patch'][-1]:.3f} wall {r['wall']:7.1f} s iterations "
-                      f"{r['iterations']:8d}", flush=True)
+                      f"{r['iterations']:8d} {r['error']}", flush=True)
             if n in (16, 32, 64):
                 growth[n] = growth_step(lmp, tissue, os.path.join(root, f"n{n}_grow"))
 
@@ -145,7 +149,8 @@ def main():
                "steps_to_0.5": int(r["step"][reached[0]]) if len(reached) else "",
                "steps": len(r["step"]), "loop_wall_s": round(r["wall"], 1),
                "loop_cpu_s": round(r["cpu"], 1), "fire_iterations": r["iterations"],
-               "vertices_end": r["vertices_end"], "check_failures": r["failures"]}
+               "vertices_end": r["vertices_end"], "check_failures": r["failures"],
+               "error": r["error"]}
         rows.append(row)
     rows.sort(key=lambda row: (row["refinement"], row["vertices"]))
     header = ("   n refinement  RMSD(64 same) RMSD(64 ref)  z@0.5  phi_end  steps->0.5  "
