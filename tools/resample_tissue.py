@@ -10,11 +10,13 @@ state that makes it the same elastic curve, the rule of fix dpoly/refine's *rule
 applied to any change of n (doc/fix_dpoly_refine.rst):
 
 * Stretching. A segment U = (eps_l d_kl / 2)(l/l0 - 1)^2 is a spring of tension
-  T = EA (l/l0 - 1) with EA = eps_l d_kl / l0 and compliance l0 / EA. The preferred length is a
-  material coordinate u (the sum of l0 along the ring): a new segment gets the l0 of the material
-  it spans, and d_kl = l0 / sum(piece l0 / (d_kl / l0)) over the old segments it spans (springs
-  in series). So the ring's preferred perimeter, its strain and tension field, and its stretching
-  stiffness are kept; for equal segments l0 = L0 / n and d_kl = d_kl_old n_old / n.
+  T = EA (l/l0 - 1) with EA = eps_l d_kl / l0 and compliance l0 / EA. The sum of l0 along the
+  ring is a material coordinate u. A new segment spans the material u..u' of the arc it replaces
+  and gets that material's strain, l0 = chord (u' - u) / arc, and its EA, the harmonic mean over
+  the old segments it spans (springs in series): d_kl = l0 (u' - u) / sum(piece / EA). So the
+  strain and tension field and the stretching stiffness per length are kept, and the preferred
+  perimeter up to the corners the chords cut; for equal segments l0 ~ L0 / n, d_kl ~ d_kl_old
+  n_old / n (the springs-in-series rule of rules consistent's split).
 * Bending. A vertex standing for the ring length lbar = (l0_in + l0_out)/2 with
   U = (eps_b d_kb / 2)(theta - theta0)^2 is a curve of modulus B = eps_b d_kb lbar and preferred
   curvature kappa0 = theta0 / lbar. B and kappa0 are interpolated linearly in u between the old
@@ -25,14 +27,18 @@ applied to any change of n (doc/fix_dpoly_refine.rst):
   thickness that phi_patch adds, the breaking stretch r* = 2.41 sigma, and refinement's split
   length (3 radii). Scaling it with l0 would change all four and the observable with n. The cost:
   below about n = 16 for these cells (segments > 2 sigma) a vertex of another cell fits between
-  two disks of a ring, so contacts no longer seal the outline.
+  two disks of a ring, so contacts no longer seal the outline, and at n = 64 (segments sigma/2)
+  a ring's next-nearest vertices touch, so self-contact acts on every bent vertex.
 * a0 per cell, as it was. Adhesive bonds are dropped: they are made again from the overlaps.
 
 Then, without --rings-only, the initial-state definition of the package's tissues is applied:
-examples/tissue/in.make_tissue -var rings (its step 2: bond every overlapping vertex pair of
-different cells, theta0 = current angles, relax at fixed box with bending on, theta0 again) and
-write_data OUT.data. At n equal to the input's count with equal segments the vertices are the
-input's (to its strain, ~1e-6 in tissue_N16.data). Standard library only.
+examples/tissue/in.make_tissue -var rings, its step 2: bond every pair of vertices of different
+cells that overlap, counting as overlapping the pairs closer than 1.001 s (relaxed rings touch at
+r = s to round-off, so resampling noise would decide otherwise), theta0 = current angles, relax
+with bending on at P0 = 1e-3 (the resampled polygons are inscribed in the old ones: less area,
+other corners, so the box must relax), theta0 again; write_data OUT.data. At n = 32 the result is
+the input (tests/check_resample_tissue.py: the rings to 1e-4 of a segment, 314 -> 315 bonds,
+phi_patch and <calA> to 1e-4). Standard library only.
 """
 import argparse
 import bisect
