@@ -24,6 +24,7 @@ Needs python3-numpy and python3-matplotlib.
 """
 import argparse
 import csv
+import math
 import os
 import shutil
 import sys
@@ -45,7 +46,19 @@ EDITS = [("read_data       tissue_N${N}.data fix Vertices NULL Vertices",
           "fix             Stiffness all property/atom d_kl d_kb ghost yes\n"
           "read_data       tissue_N${N}.data fix Vertices NULL Vertices fix Stiffness NULL Stiffness"),
          ('"fix refine all dpoly/refine length ${refine}"',
-          '"fix refine all dpoly/refine length ${refine} rules consistent"')]
+          '"fix refine all dpoly/refine length ${refine} rules consistent"'),
+         ("min_modify      tmax 5", "min_modify      tmax ${tmax}")]
+THETA0_MIN = -math.pi / 10    # the default parameter set's, at 32 vertices per cell
+
+
+def per_vertex_settings(n, scale):
+    """-var values that keep the 32-vertex physics at n (scale) or the package's (not scale).
+    theta0_min bounds theta0 = kappa0 lbar: the same curvature bound is theta0_min 32/n.
+    FIRE's largest step timestep x tmax (0.05) must stay below 2/omega_max, and the bending
+    modes' omega_max grows as sqrt(d_kb)/lbar ~ n^1.5: tmax 5 (32/n)^1.5 above 32."""
+    if not scale:
+        return {"tmax": 5}
+    return {"theta0_min": THETA0_MIN * 32 / n, "tmax": 5 * min(1.0, (32 / n) ** 1.5)}
 
 
 def patched_input(workdir):
@@ -60,13 +73,14 @@ def patched_input(workdir):
     return "in.vertices"
 
 
-def run(lmp, tissue, refine, steps, phi_stop, workdir):
+def run(lmp, tissue, refine, steps, phi_stop, workdir, settings):
     mesophyll_run.scratch(workdir)
     shutil.copy(tissue, os.path.join(workdir, "tissue_N16.data"))
     result = mesophyll_run.run(lmp, patched_input(workdir), workdir,
-                               {"N": 16, "steps": steps, "phi_stop": phi_stop,
-                                "refine": 3 if refine == "consistent" else 0,
-                                "restart_every": 0}, example=None, check=False)
+                               dict({"N": 16, "steps": steps, "phi_stop": phi_stop,
+                                     "refine": 3 if refine == "consistent" else 0,
+                                     "restart_every": 0}, **settings),
+                               example=None, check=False)
     record = {k: np.array(v) for k, v in result.growth[16].items()}
     # a run that stopped with an error keeps the growth steps it recorded
     errors_ = [line for line in result.log.splitlines() if line.startswith("ERROR")]
@@ -81,11 +95,11 @@ def run(lmp, tissue, refine, steps, phi_stop, workdir):
     return record
 
 
-def growth_step(lmp, tissue, workdir):
+def growth_step(lmp, tissue, workdir, settings):
     """What the first growth step (no refinement) does to the rings: mean over cells of the
     change of sum(l0) and of the void-facing fraction; mean change of kappa0 = theta0/lbar over
     void-facing vertices (drift and smoothing) and its RMS over bonded ones (smoothing alone)."""
-    run(lmp, tissue, "none", 1, 0.0, workdir)
+    run(lmp, tissue, "none", 1, 0.0, workdir, settings)
     before = {v["tag"]: v for ring in resample_tissue.read_tissue(tissue)[1] for v in ring}
     grown = os.path.join(workdir, "grown.data")
     _, rings = resample_tissue.read_tissue(grown)
@@ -111,14 +125,19 @@ def main():
     p.add_argument("--steps", type=int, default=30, help="at most this many growth steps")
     p.add_argument("--phi-stop", type=float, default=0.5, help="stop below this phi_patch")
     p.add_argument("--budget", type=float, default=0.03, help="largest calA RMSD from n = 64")
-    p.add_argument("--quick", action="store_true", help="2 growth steps, n = 16 and 32")
+    p.add_argument("--quick", action="store_true", help="2 growth steps (n = 16 and 32 unless --vertices)")
+    p.add_argument("--package-settings", action="store_true",
+                   help="theta0_min and FIRE's tmax as the package has them at every n "
+                        "(default: scaled with n, see per_vertex_settings)")
     p.add_argument("--csv", default=os.path.join(ROOT, "bench", "results",
                                                  "vertices_per_cell.csv"))
     p.add_argument("--png", default=os.path.join(ROOT, "bench", "results",
                                                  "vertices_per_cell.png"))
     args = p.parse_args()
     if args.quick:
-        args.steps, args.vertices = 2, [16, 32]
+        args.steps = 2
+        if args.vertices == p.get_default("vertices"):
+            args.vertices = [16, 32]
     lmp = os.path.abspath(args.lmp)
     finest = max(args.vertices)
     records = {}
@@ -127,14 +146,16 @@ def main():
         for n in args.vertices:
             tissue = os.path.join(root, f"tissue_n{n}.data")
             resample_tissue.main([SOURCE, str(n), tissue, "--lmp", lmp])
+            settings = per_vertex_settings(n, not args.package_settings)
             for refine in ("consistent", "none"):
                 r = records[n, refine] = run(lmp, tissue, refine, args.steps, args.phi_stop,
-                                             os.path.join(root, f"n{n}_{refine}"))
+                                             os.path.join(root, f"n{n}_{refine}"), settings)
                 print(f"n {n:3d} {refine:10s} steps {len(r['step']):3d} phi_patch "
                       f"{r['phi_patch'][-1]:.3f} wall {r['wall']:7.1f} s iterations "
                       f"{r['iterations']:8d} {r['error']}", flush=True)
             if n in (16, 32, 64):
-                growth[n] = growth_step(lmp, tissue, os.path.join(root, f"n{n}_grow"))
+                growth[n] = growth_step(lmp, tissue, os.path.join(root, f"n{n}_grow"),
+                                        settings)
 
     rows = []
     reference = records[finest, "consistent"]
