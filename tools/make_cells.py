@@ -56,7 +56,9 @@ def build(args):
     return box, atoms, bonds, angles, state
 
 
-def write(path, box, atoms, bonds, angles, state, comment, bond_types=1, shuffle=0):
+def write(path, box, atoms, bonds, angles, state, comment, bond_types=1, shuffle=0,
+          stiffness=None):
+    """stiffness: per atom (d_kl, d_kb), written as a Stiffness section (fix Stiffness)."""
     with open(path, "w") as out:
         out.write(f"LAMMPS data file: {comment}\n\n")
         out.write(f"{len(atoms)} atoms\n1 atom types\n{len(bonds)} bonds\n{bond_types} bond types\n")
@@ -77,6 +79,10 @@ def write(path, box, atoms, bonds, angles, state, comment, bond_types=1, shuffle
         out.write("\nVertices\n\n")
         for i, s in enumerate(state, 1):
             out.write(f"{i} {s[0]:.16g} {s[1]:.16g} {s[2]:.16g} {s[3]:.16g}\n")
+        if stiffness is not None:
+            out.write("\nStiffness\n\n")
+            for i, k in enumerate(stiffness, 1):
+                out.write(f"{i} {k[0]:.16g} {k[1]:.16g}\n")
 
 
 def write_molecule(path, n, a0, calA0_relative):
