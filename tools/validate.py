@@ -337,12 +337,12 @@ def read_csv(path):
 
 
 def at_phi(record, key, phi):
-    """key interpolated linearly in phi_patch where the run first falls to phi (nan if never):
-    the first crossing, so that a later rise of phi_patch does not pick a second one."""
+    """key interpolated linearly in phi_patch where the run first falls to phi (nan if never, or
+    if it starts below): the first crossing, so that a later rise of phi_patch picks no other."""
     f, v = record["phi_patch"], record[key]
     below = np.nonzero(f <= phi)[0]
     if len(below) == 0 or below[0] == 0:
-        return np.nan if len(below) == 0 else v[0]
+        return np.nan
     k = below[0]
     return v[k - 1] + (v[k] - v[k - 1]) * (phi - f[k - 1]) / (f[k] - f[k - 1])
 
