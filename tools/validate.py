@@ -396,7 +396,7 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
         return (f"| {label} | {fmt(pm)} ({fmt(plo)}..{fmt(phi_)}) | {fmt(m)} ({fmt(lo)}..{fmt(hi)})"
                 f" | {inside} |")
 
-    f3 = lambda v: "-" if np.isnan(v) else f"{v:.3f}"  # noqa: E731
+    f3 = lambda v: "-" if np.isnan(v) else f"{v:.4f}"  # noqa: E731
     f1 = lambda v: "-" if np.isnan(v) else f"{v:.1f}"  # noqa: E731
     head = ["| quantity | published: mean (min..max) | package: mean (min..max) | "
             "package mean inside published min..max |", "| --- | --- | --- | --- |"]
@@ -410,7 +410,8 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
              f"{PUB_STOP}. Both from tissue_N16.data, both measured by compute dpoly/tissue. "
              "Spread = min..max over seeds (no seed of one code corresponds to one of the "
              "other: their random streams differ). growth steps = growth steps done before "
-             "the minimum.", "", "At matched phi_patch (linear interpolation at the first "
+             "the minimum; after 0 growth steps the published code's state is its fixed-box relaxation of "
+             "the input (its frame 0), the package's its first minimum at P0.", "", "At matched phi_patch (linear interpolation at the first "
              "crossing):", ""] + head
     for phi in PUB_PHI:
         for key in ("calA", "z"):
