@@ -2,6 +2,7 @@
 """Validate the package against the paper: run the development, write doc/validation.md and PNGs.
 
     tools/validate.py [--lmp build/lmp] [--jobs 2] [--out doc] [--cache DIR] [--quick]
+                      [--published [--published-dir validation/published]]
 
 Runs examples/mesophyll/in.mesophyll:
   A. the default run (N = 64) with three seeds of bond breaking, with vertex insertion (the
@@ -10,6 +11,9 @@ Runs examples/mesophyll/in.mesophyll:
      insertion), with as many growth steps as give the default's total growth of a0 (40 x 0.5);
   C. the paper's rules (z counts cells, calA_max 3 without growth above) beside the default
      (N = 64, without insertion).
+  D. (--published: only this part) the comparison with the published code: in.mesophyll with
+     N = 16 for as many seeds as validation/published/ holds CSVs of the published code with
+     insertion, to phi_patch 0.45, against those CSVs (see validation/published/README.md).
 Then states, claim by claim of the paper's Fig 2 (listed in the Howto's "The main run"), whether
 it holds, with the numbers, and draws the PNGs next to the text. --quick runs a few steps only (to try the script); --cache keeps each
 run's record and log in DIR and reuses them. The runs take about an hour on 2 cores. Needs
@@ -43,7 +47,7 @@ KINDS = [("cross themselves", "rings cross themselves"),
          ("|P - P0|/P0 =", "P off P0 by more than 1e-6")]
 
 
-def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache):
+def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache, phi_stop="0.3"):
     """Run one development (or take it from the cache); return its growth record."""
     work = os.path.join(cache or workroot, name)
     if cache and os.path.exists(os.path.join(work, f"growth.N{cells}.txt")):
@@ -51,7 +55,7 @@ def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache):
     else:
         result = mesophyll_run.run(
             lmp, "in.mesophyll", work,
-            {"N": cells, "set": pset, "seed": seed, "steps": steps, "phi_stop": "0.3",
+            {"N": cells, "set": pset, "seed": seed, "steps": steps, "phi_stop": phi_stop,
              "ftol": FTOL.get(pset, 1e-10), "maxiter": MAXITER.get(pset, 200000),
              "refine": refine}, check=False)
     record = {n: np.array(v) for n, v in result.growth[cells].items()}
@@ -105,8 +109,13 @@ def main():
     p.add_argument("--out", default=os.path.join(ROOT, "doc"))
     p.add_argument("--quick", action="store_true")
     p.add_argument("--cache", default=None, help="keep and reuse each run's record here")
+    p.add_argument("--published", action="store_true",
+                   help="only the comparison with the published code (part D)")
+    p.add_argument("--published-dir", default=os.path.join(ROOT, "validation", "published"))
     args = p.parse_args()
     lmp = os.path.abspath(args.lmp)
+    if args.published:
+        return published_comparison(lmp, args)
     steps64 = 3 if args.quick else 40
 
     jobs = []
@@ -310,6 +319,135 @@ def failure_section(runs):
                   "reach; where it does not, those minima are not at P0 and the run's numbers "
                   "after them are not converged results."]
     return lines
+
+
+# --- D. the comparison with the published code (--published) --------------------------------
+
+PUB_SEEDS = [20261122, 11, 12, 13, 14]    # the package's seeds, as many as published CSVs
+PUB_PHI = [0.9, 0.8, 0.7, 0.6, 0.5]       # matched phi_patch at which calA and z are compared
+PUB_STOP = "0.45"
+
+
+def read_csv(path):
+    """{column: array} of a CSV of validation/published (run.py wrote it)."""
+    with open(path) as f:
+        names = f.readline().strip().split(",")
+        rows = [[float(w) for w in line.split(",")] for line in f if line.strip()]
+    return {n: np.array([r[k] for r in rows]) for k, n in enumerate(names)}
+
+
+def at_phi(record, key, phi):
+    """key interpolated linearly in phi_patch where the run first falls to phi (nan if never, or
+    if it starts below): the first crossing, so that a later rise of phi_patch picks no other."""
+    f, v = record["phi_patch"], record[key]
+    below = np.nonzero(f <= phi)[0]
+    if len(below) == 0 or below[0] == 0:
+        return np.nan
+    k = below[0]
+    return v[k - 1] + (v[k] - v[k - 1]) * (phi - f[k - 1]) / (f[k] - f[k - 1])
+
+
+def steps_to(record, phi):
+    """Growth steps done before the first minimum with phi_patch <= phi (nan if none)."""
+    below = np.nonzero(record["phi_patch"] <= phi)[0]
+    return record["growth_steps"][below[0]] if len(below) else np.nan
+
+
+def spread(values):
+    """(mean, min, max) over seeds of the values that exist."""
+    v = np.array(values, float)
+    v = v[~np.isnan(v)]
+    return (np.nan, np.nan, np.nan) if len(v) == 0 else (v.mean(), v.min(), v.max())
+
+
+def published_comparison(lmp, args):
+    """Part D: package (in.mesophyll, N = 16, to phi_patch 0.45) against the published code's
+    CSVs, at matched phi_patch and per growth step; spread = min..max over seeds."""
+    import glob
+    paths = sorted(glob.glob(os.path.join(args.published_dir, "N16_insert_seed*.csv")))
+    if not paths:
+        raise SystemExit(f"no N16_insert_seed*.csv in {args.published_dir}")
+    pub = {os.path.basename(q)[len("N16_insert_seed"):-4]: read_csv(q) for q in paths}
+    seeds = PUB_SEEDS[:len(pub)]
+    steps = 3 if args.quick else 80
+    pkg = {}
+    with tempfile.TemporaryDirectory() as workroot:
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            futures = [pool.submit(run, lmp, f"published_pkg_N16_{s}", 16, "default", s, steps, 3,
+                                   workroot, args.cache, PUB_STOP) for s in seeds]
+            for f in concurrent.futures.as_completed(futures):
+                name, r = f.result()
+                r["growth_steps"] = r["step"] - 1    # row k of in.mesophyll: k - 1 growths
+                pkg[name] = r
+                print(f"{name}: {len(r['step'])} minima, phi_patch {r['phi_patch'][-1]:.3f}",
+                      flush=True)
+    pkg = [pkg[f"published_pkg_N16_{s}"] for s in seeds]
+    pubs = list(pub.values())
+    write_published_report(pkg, pubs, seeds, sorted(pub), args.out, args.quick)
+
+
+def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
+    os.makedirs(out, exist_ok=True)
+
+    def row(label, pkg_values, pub_values, fmt):
+        m, lo, hi = spread(pkg_values)
+        pm, plo, phi_ = spread(pub_values)
+        inside = "n/a" if np.isnan(m) or np.isnan(pm) else ("yes" if plo <= m <= phi_ else "no")
+        return (f"| {label} | {fmt(pm)} ({fmt(plo)}..{fmt(phi_)}) | {fmt(m)} ({fmt(lo)}..{fmt(hi)})"
+                f" | {inside} |")
+
+    f3 = lambda v: "-" if np.isnan(v) else f"{v:.4f}"  # noqa: E731
+    f1 = lambda v: "-" if np.isnan(v) else f"{v:.1f}"  # noqa: E731
+    head = ["| quantity | published: mean (min..max) | package: mean (min..max) | "
+            "package mean inside published min..max |", "| --- | --- | --- | --- |"]
+    lines = ["## Comparison with the published code (N = 16)" + (" (--quick)" if quick else ""),
+             "",
+             f"Published code: jacktreado/dpm readInMesoNetwork2D, {len(pubs)} seeds "
+             f"({', '.join(pub_seeds)}), with its vertex insertion, from the CSVs of "
+             "validation/published (README.md there says how they were made). Package: "
+             f"examples/mesophyll/in.mesophyll -var N 16, {len(seeds)} seeds "
+             f"({', '.join(map(str, seeds))}), as it is in this checkout, stopped at phi_patch "
+             f"{PUB_STOP}. Both from tissue_N16.data, both measured by compute dpoly/tissue. "
+             "Spread = min..max over seeds (no seed of one code corresponds to one of the "
+             "other: their random streams differ). growth steps = growth steps done before "
+             "the minimum; after 0 growth steps the published code's state is its fixed-box relaxation of "
+             "the input (its frame 0), the package's its first minimum at P0.", "", "At matched phi_patch (linear interpolation at the first "
+             "crossing):", ""] + head
+    for phi in PUB_PHI:
+        for key in ("calA", "z"):
+            lines.append(row(f"{key} at phi_patch {phi}", [at_phi(r, key, phi) for r in pkg],
+                             [at_phi(r, key, phi) for r in pubs], f3))
+    lines.append(row("growth steps to phi_patch <= 0.5", [steps_to(r, 0.5) for r in pkg],
+                     [steps_to(r, 0.5) for r in pubs], f1))
+    last = int(max(max(r["growth_steps"]) for r in pubs))
+    lines += ["", "Per growth step (runs that have the step):", ""] + head
+    for k in range(last + 1):
+        for key in ("phi_patch", "calA", "z"):
+            def at(r):
+                hit = np.nonzero(r["growth_steps"] == k)[0]
+                return r[key][hit[0]] if len(hit) else np.nan
+            lines.append(row(f"{key} after {k} growth steps", [at(r) for r in pkg],
+                             [at(r) for r in pubs], f3))
+    lines += ["", "![calA and z against phi_patch, both codes](published_comparison.png)"]
+
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    for ax, key, label in [(axes[0], "calA", r"mean $\mathcal{A}$"),
+                           (axes[1], "z", r"mean $z$")]:
+        for runs, colour, name in [(pubs, "C3", "published"), (pkg, "C0", "package")]:
+            for r in runs:
+                ax.plot(r["phi_patch"], r[key], "-", color=colour, lw=0.6, alpha=0.6)
+            grid = np.linspace(0.45, 0.93, 49)
+            mean = np.nanmean([[at_phi(r, key, g) for g in grid] for r in runs], axis=0)
+            ax.plot(grid, mean, "-", color=colour, lw=2.5, label=f"{name} (mean of {len(runs)})")
+        ax.set_xlabel(r"$\phi_{patch}$")
+        ax.set_ylabel(label)
+        ax.invert_xaxis()
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "published_comparison.png"), dpi=150)
+    with open(os.path.join(out, "published_comparison.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"wrote {os.path.join(out, 'published_comparison.md')} and its PNG")
 
 
 if __name__ == "__main__":
