@@ -571,7 +571,7 @@ std::vector<Case> cases()
                "Fix mesophyll/grow delta_a must be >= 0, got -1");
   keyword_case("GrowRules", "fix mesophyll/grow rules authors",
                "fix grow all mesophyll/grow box fixed rules authors\n",
-               "rules must be 'code' or 'paper', got 'authors'");
+               "rules must be 'code', 'paper' or 'published', got 'authors'");
   keyword_case("GrowBox", "fix mesophyll/grow box free", "fix grow all mesophyll/grow box free\n",
                "box must be 'relax' or 'fixed', got 'free'");
   keyword_case("GrowWithoutBoxRelax", "fix mesophyll/grow without fix box/relax",

@@ -214,7 +214,7 @@ TEST_F(BadGrowth, RefusesNonsense)
   EXPECT_THAT(error_of("fix g all mesophyll/grow c_L -0.1"),
               HasSubstr("c_L must be >= 0, got -0.1"));
   EXPECT_THAT(error_of("fix g all mesophyll/grow rules mine"),
-              HasSubstr("rules must be 'code' or 'paper'"));
+              HasSubstr("rules must be 'code', 'paper' or 'published', got 'mine'"));
   EXPECT_THAT(error_of("fix g all mesophyll/grow speed 2"), HasSubstr("keyword: speed"));
   EXPECT_THAT(error_of("fix g all mesophyll/grow box open"),
               HasSubstr("box must be 'relax' or 'fixed'"));

@@ -26,8 +26,8 @@ using namespace LAMMPS_NS;
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, GROW, 5), delta_a(0.5), lambda(5.0), c_length(0.5),
     c_bending(4.0), theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1),
-    scale_diameters(1), need_box_relax(1), steps(0), void_vertices(0), cells_above_max(0),
-    packing_last(-1.0), compaction(0.0)
+    as_published(0), scale_diameters(1), need_box_relax(1), steps(0), void_vertices(0),
+    cells_above_max(0), packing_last(-1.0), compaction(0.0)
 {
   bool shape_max_given = false;
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -67,8 +67,14 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
       shape_max = number(0.0, true);
       shape_max_given = true;
     } else if (strcmp(key, "rules") == 0) {
-      // code: isometric growth above calA_max 2.5; paper: none above 3
-      const bool paper = one_of(key, value, "code", "paper");
+      // code: isometric growth above calA_max 2.5; paper: none above 3; published: code, with
+      // the published code's run lengths, drift past theta0_min and in-place smoothing
+      const bool paper = strcmp(value, "paper") == 0;
+      as_published = strcmp(value, "published") == 0;
+      if (!paper && !as_published && strcmp(value, "code") != 0)
+        error->all(FLERR,
+                   "Fix mesophyll/grow rules must be 'code', 'paper' or 'published', got '{}'",
+                   value);
       grow_above_max = paper ? 0 : 1;
       if (!shape_max_given) shape_max = paper ? 3.0 : 2.5;
     } else if (strcmp(key, "scale_sigma") == 0)
@@ -145,7 +151,11 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
                                  std::unordered_map<tagint, double> &length_growth,
                                  std::unordered_map<tagint, double> &new_angle)
 {
-  const std::vector<tagint> &ring = cells->ring(c);
+  // rules published sweeps each ring in place from its smallest ID (the published code's first
+  // vertex of the cell, in the order tools convert tissues), whatever vertex the hub starts at
+  std::vector<tagint> ring = cells->ring(c);
+  if (as_published)
+    std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
   const int n = (int) ring.size();
   const double p = cells->perimeter(c), a = cells->area(c);
   const double dl_std = 0.5 * (p / a) * delta_a;
@@ -175,8 +185,10 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
       }
       std::vector<int> members;
       for (int m = k; is_void(m); m = (m + 1) % n) members.push_back(m);
-      double length = 0.0;
-      for (int q : members) length += 0.5 * (segment(q - 1) + segment(q));
+      // the published code counts the two segments that end the run in full
+      double length = as_published ? segment(members.front() - 1) : 0.0;
+      for (int q : members)
+        length += as_published ? segment(q) : 0.5 * (segment(q - 1) + segment(q));
       for (int q : members) run_length[q] = length;
       runs.push_back(length);
       step += (int) members.size();
@@ -184,24 +196,58 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
   }
   double mean_run = 0.0;
   for (double r : runs) mean_run += r / runs.size();
+  // The published code measures a vertex's run by walking forward from the bonded vertex before
+  // it while this vertex or the next is void-facing (meso2D::voidPerimeterSegment()): that walk
+  // goes on across a single bonded vertex into the next run, so runs one bonded vertex apart
+  // count as one there (but not in the mean, meso2D::totalVoidPerimeter()).
+  if (as_published && first_bonded < n)
+    for (int k = 0; k < n; k++) {
+      if (!is_void(k)) continue;
+      int start = k;
+      while (is_void(start)) start = (start + n - 1) % n;
+      double length = 0.0;
+      int g = start;
+      do {
+        length += segment(g);
+        g = (g + 1) % n;
+      } while ((is_void((g + 1) % n) || is_void(g)) && g != start);
+      run_length[k] = length;
+    }
 
   std::vector<double> dl(n, 0.0), angle(n);
+  for (int k = 0; k < n; k++) angle[k] = vertex[ring[k]]->preferred_angle;
+  const double drift = c_bending * dl_std / n, smoothing = dl_std / n;
+  auto drift_down = [&](int k) {
+    if (!as_published)
+      angle[k] = std::max(theta0_min, angle[k] - drift);
+    else    // the published code: the full step from above the bound, to the bound from below
+      angle[k] = angle[k] > theta0_min ? angle[k] - drift : theta0_min;
+  };
+  std::vector<double> smoothed(n);
   for (int k = 0; k < n; k++) {
-    angle[k] = vertex[ring[k]]->preferred_angle;
-    if (!is_void(k)) continue;
-    void_vertices++;
-    if (shape < shape_max)
-      dl[k] = lambda * dl_std / n * ((1.0 - c_length) + c_length * (mean_run - run_length[k]) / p);
-    else
-      dl[k] = grow_above_max ? dl_std / n : 0.0;
-    angle[k] = std::max(theta0_min, angle[k] - c_bending * dl_std / n);
+    const int before = (k + n - 1) % n, after = (k + 1) % n;
+    if (is_void(k)) {
+      void_vertices++;
+      if (shape < shape_max)
+        dl[k] =
+            lambda * dl_std / n * ((1.0 - c_length) + c_length * (mean_run - run_length[k]) / p);
+      else
+        dl[k] = grow_above_max ? dl_std / n : 0.0;
+      drift_down(k);
+    }
+    // the published code smooths in place, vertex by vertex in ring order from the cell's first
+    // (smallest ID): the next vertex is still undrifted, the previous one done (but at the ends)
+    if (as_published)
+      angle[k] += smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
   }
   for (int k = 0; k < n; k++) {
     const int before = (k + n - 1) % n, after = (k + 1) % n;
     length_growth[ring[k]] = dl[k] + dl[after];    // segment k -> k+1 touches both vertices
-    new_angle[ring[k]] =
-        angle[k] + dl_std / n * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+    smoothed[k] = as_published
+        ? angle[k]
+        : angle[k] + smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
   }
+  for (int k = 0; k < n; k++) new_angle[ring[k]] = smoothed[k];
 }
 
 /* ----------------------------------------------------------------------

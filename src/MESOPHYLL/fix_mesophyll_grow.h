@@ -46,6 +46,7 @@ class FixMesophyllGrow : public FixDPolyStage {
 
   double delta_a, lambda, c_length, c_bending, theta0_min, shape_max;
   int grow_above_max;    // above shape_max: isometric growth (authors' code) or none (paper)
+  int as_published;      // rules published: the published code's run lengths, drift, smoothing
   int scale_diameters;
   int need_box_relax;
   bigint steps;
