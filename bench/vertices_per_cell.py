@@ -11,15 +11,16 @@ cells, same ring stretching stiffness, bending rigidity and preferred curvature;
 Each runs examples/mesophyll/in.mesophyll -var N 16 (default parameter set, one seed) to
 phi_patch 0.5 or --steps growth steps, through tools/mesophyll_run.py, in a copy of the input
 that reads the stiffness factors d_kl, d_kb of the data file (fix Stiffness) and refines with
-fix dpoly/refine rules consistent (refinement "consistent") or not at all (-var refine 0,
-refinement "none"). Per run: mean calA against phi_patch, its RMSD from the n = 64 run of the
+fix dpoly/refine rules consistent (-var refine consistent) or not at all (-var refine none). Per run: mean calA against phi_patch, its RMSD from the n = 64 run of the
 same refinement and from n = 64 with refinement (on their common phi_patch range,
 bench/speed_accuracy.py's measure), z at phi_patch 0.5, growth steps to 0.5, loop time (wall and
 CPU of the minimizations) and FIRE iterations. Also the first growth step's change of each
 cell's preferred perimeter sum(l0) and of the preferred curvature theta0/lbar of its void-facing
 vertices, at n = 16, 32, 64: whether fix mesophyll/grow's rules are resolution-consistent.
 Prints tables, writes CSV and PNG, and names the coarsest start (and its cost) whose calA stays
-within --budget of n = 64 with refinement. --quick: 2 growth steps, n = 16 and 32.
+within --budget of n = 64 with refinement; and, at n = 32, the RMSD between runs with other
+bond-breaking seeds (--spread-seeds), the floor below which no resolution can be told apart
+from another. --quick: 2 growth steps, n = 16 and 32.
 Needs python3-numpy and python3-matplotlib.
 """
 import argparse
@@ -40,13 +41,11 @@ import resample_tissue  # noqa: E402
 from speed_accuracy import along_phi, errors, plt  # noqa: E402
 
 SOURCE = os.path.join(ROOT, "examples", "mesophyll", "tissue_N16.data")
-# the copy of in.mesophyll: stiffness factors from the data file and refinement rules consistent
-# (patched_input() also appends a write_data of the tissue at the end)
-EDITS = [("read_data       tissue_N${N}.data fix Vertices NULL Vertices",
-          "fix             Stiffness all property/atom d_kl d_kb ghost yes\n"
-          "read_data       tissue_N${N}.data fix Vertices NULL Vertices fix Stiffness NULL Stiffness"),
-         ('"fix refine all dpoly/refine length ${refine}"',
-          '"fix refine all dpoly/refine length ${refine} rules consistent"'),
+# the copy of in.mesophyll: stiffness factors from the data file, FIRE's tmax a variable
+# (patched_input() also appends a write_data of the tissue at the end); refinement is -var refine
+EDITS = [("read_data       ${tissue} fix Vertices NULL Vertices",
+          "read_data       ${tissue} fix Vertices NULL Vertices fix Stiffness NULL Stiffness"),
+         ("set             group all d_kl 1.0\nset             group all d_kb 1.0\n", ""),
          ("min_modify      tmax 5", "min_modify      tmax ${tmax}")]
 THETA0_MIN = -math.pi / 10    # the default parameter set's, at 32 vertices per cell
 
@@ -78,7 +77,7 @@ def run(lmp, tissue, refine, steps, phi_stop, workdir, settings):
     shutil.copy(tissue, os.path.join(workdir, "tissue_N16.data"))
     result = mesophyll_run.run(lmp, patched_input(workdir), workdir,
                                dict({"N": 16, "steps": steps, "phi_stop": phi_stop,
-                                     "refine": 3 if refine == "consistent" else 0,
+                                     "refine": refine,
                                      "restart_every": 0}, **settings),
                                example=None, check=False)
     record = {k: np.array(v) for k, v in result.growth[16].items()}
@@ -129,6 +128,9 @@ def main():
     p.add_argument("--package-settings", action="store_true",
                    help="theta0_min and FIRE's tmax as the package has them at every n "
                         "(default: scaled with n, see per_vertex_settings)")
+    p.add_argument("--spread-seeds", type=int, nargs="*", default=[11, 12],
+                   help="other bond-breaking seeds run at n = 32: the calA RMSD between seeds "
+                        "at one resolution, the floor against which the budget is read")
     p.add_argument("--csv", default=os.path.join(ROOT, "bench", "results",
                                                  "vertices_per_cell.csv"))
     p.add_argument("--png", default=os.path.join(ROOT, "bench", "results",
@@ -142,6 +144,7 @@ def main():
     finest = max(args.vertices)
     records = {}
     growth = {}
+    spread = {}    # (seed, refinement): n = 32 runs with other breaking seeds
     with tempfile.TemporaryDirectory() as root:
         for n in args.vertices:
             tissue = os.path.join(root, f"tissue_n{n}.data")
@@ -156,6 +159,13 @@ def main():
             if n in (16, 32, 64):
                 growth[n] = growth_step(lmp, tissue, os.path.join(root, f"n{n}_grow"),
                                         settings)
+            if n == 32:
+                for seed in args.spread_seeds:
+                    for refine in ("consistent", "none"):
+                        spread[seed, refine] = run(
+                            lmp, tissue, refine, args.steps, args.phi_stop,
+                            os.path.join(root, f"n{n}_{refine}_{seed}"),
+                            dict(settings, seed=seed))
 
     rows = []
     reference = records[finest, "consistent"]
@@ -192,6 +202,19 @@ def main():
               f"{round(reference['cpu'], 1)} s, {reference['iterations']})")
     else:
         print(f"no start coarser than n = {finest} within calA RMSD <= {args.budget}")
+
+    if spread and 32 in args.vertices:
+        print("n = 32, other bond-breaking seeds (the seed-to-seed floor of the RMSD):")
+        seed_rows = []
+        for (seed, refine), r in sorted(spread.items()):
+            rmsd = errors(r, records[32, refine])["calA_rmsd"]
+            seed_rows.append({"seed": seed, "refinement": refine, "calA_rmsd_vs_default_seed":
+                              rmsd, "phi_patch_end": float(r["phi_patch"][-1])})
+            print(f"  seed {seed:6d} {refine:10s} calA RMSD from the default seed {rmsd:.4f}")
+        with open(os.path.splitext(args.csv)[0] + "_seeds.csv", "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=list(seed_rows[0].keys()))
+            writer.writeheader()
+            writer.writerows(seed_rows)
 
     print("first growth step, no refinement (void: void-facing fraction of the vertices):")
     print("   n   void   d sum(l0)/cell  d sum(l0)/void  mean d kappa0 (void)  "
