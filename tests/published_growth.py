@@ -21,26 +21,10 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from regression import add_launcher_arguments, launch    # noqa: E402
+from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
 
 TOLERANCE = 1e-5
-INPUT = """units lj
-dimension 2
-atom_style molecular
-boundary p p p
-bond_style hybrid dpoly/segment mesophyll/adhesion z bonds
-angle_style dpoly/bending
-fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes
-read_data {frame} fix Vertices NULL Vertices
-bond_coeff 1 dpoly/segment 1.0
-bond_coeff 2 mesophyll/adhesion 1.0
-angle_coeff * 0.4
-pair_style dpoly/contact
-pair_coeff * * 1.0
-special_bonds lj 1.0 1.0 1.0
-comm_modify cutoff 4.0
-fix cells all dpoly/cells eps_a 1.0
-fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4 &
+GROW = """fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4 &
     theta0_min -0.3141592653589793 rules {rules}
 # relaxed at the frame's own pressure: the atoms hardly move, but they migrate and are sorted,
 # so the hub's rings no longer start at their smallest ID, where the published code's in-place
@@ -74,7 +58,7 @@ def largest_difference(args, rules, work):
     frames = os.path.abspath(args.frames)
     frame = os.path.join(frames, "published_frame_0.data")
     with open(os.path.join(work, "in.grow"), "w") as f:
-        f.write(INPUT.format(frame=frame, rules=rules))
+        f.write(tissue_commands(frame) + GROW.format(rules=rules))
     command, env = launch(args, ["-in", "in.grow", "-log", "none", "-echo", "none",
                                  "-screen", "none"])
     if subprocess.run(command, cwd=work, env=env).returncode != 0:

@@ -89,6 +89,30 @@ def add_launcher_arguments(parser):
                         help="flags after the program (MPIEXEC_POSTFLAGS)")
 
 
+def tissue_commands(data, after_read=""):
+    """LAMMPS commands that read a tissue data file with the main example's styles and Table 1
+    coefficients (segments, adhesion z bonds, bending 0.4, contacts) and the cells' hub; the
+    commands in after_read come right after read_data. Shared by replicate.py and
+    published_growth.py."""
+    return f"""units lj
+dimension 2
+atom_style molecular
+boundary p p p
+bond_style hybrid dpoly/segment mesophyll/adhesion z bonds
+angle_style dpoly/bending
+fix Vertices all property/atom d_sigma d_l0 d_theta0 d_a0 ghost yes
+read_data {data} fix Vertices NULL Vertices
+{after_read}bond_coeff 1 dpoly/segment 1.0
+bond_coeff 2 mesophyll/adhesion 1.0
+angle_coeff * 0.4
+pair_style dpoly/contact
+pair_coeff * * 1.0
+special_bonds lj 1.0 1.0 1.0
+comm_modify cutoff 4.0
+fix cells all dpoly/cells eps_a 1.0
+"""
+
+
 def launch(args, lmp_arguments):
     """The command line and environment that run lmp with lmp_arguments on args.np ranks."""
     env = dict(os.environ)
