@@ -2,11 +2,11 @@
 """Benchmark the growth protocol: wall time and minimizer iterations per growth step.
 
     bench/development.py [--lmp build/lmp] [--cells 16 64] [--ranks 1 2] [--steps 11]
-                         [--refine 3] [--csv bench/results/development.csv] [--mpirun mpirun]
+                         [--refine published] [--csv bench/results/development.csv] [--mpirun mpirun]
 
 Runs examples/mesophyll/in.mesophyll (default parameter set, min_style fire/nph) for each number
-of cells and MPI ranks, one after the other, with vertex insertion at --refine vertex radii (the
-example's 3; 0: none), and writes one CSV row per growth step: cells, ranks, refine, step,
+of cells and MPI ranks, one after the other, with vertex insertion by fix dpoly/refine rules --refine
+(the example's published; none: no insertion), and writes one CSV row per growth step: cells, ranks, refine, step,
 phi_patch, mean calA, vertices, iterations, force evaluations, minimization wall time (LAMMPS's
 "Loop time"). Prints a summary per run with the published code's figures beside it. Not a
 test: run it on an otherwise idle machine and record the machine with the figures. Standard
@@ -51,7 +51,8 @@ def main():
     p.add_argument("--cells", type=int, nargs="+", default=[16, 64])
     p.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     p.add_argument("--steps", type=int, default=11)
-    p.add_argument("--refine", default="3", help="fix dpoly/refine length; 0: no insertion")
+    p.add_argument("--refine", default="published",
+                   help="fix dpoly/refine rules (published, consistent, tension); none: no insertion")
     p.add_argument("--csv", default=os.path.join(HERE, "results", "development.csv"))
     p.add_argument("--mpirun", default="mpirun")
     args = p.parse_args()

@@ -11,8 +11,8 @@ no vertex insertion, 1 rank). The tolerance knob changes the reference's ftol; e
 changes one setting of the base, the reference at ftol 1e-10 (at 1e-12 most late minimizations
 of the 16-cell run end at the iteration limit, which would make every run cost the limit).
 Knobs: force tolerance, min style (cg capped at 20000 iterations per minimization), growth
-increment delta_a (at the same total growth of a0), vertex insertion (fix dpoly/refine, split
-length in vertex radii), MPI ranks. Accuracy = distance of the run's
+increment delta_a (at the same total growth of a0), vertex insertion (fix dpoly/refine, its
+rule set), MPI ranks. Accuracy = distance of the run's
 observables from the reference: RMSD of mean calA over phi_patch (interpolated on their common
 range), |delta phi_patch| at the end, |delta z| at phi_patch = 0.5 (or the lowest common phi),
 and max |P/P0 - 1|. Cost = minimization wall time, CPU time per rank (wall time x LAMMPS's "CPU
@@ -42,10 +42,10 @@ TOTAL_GROWTH = 20.0    # 40 steps of delta_a 0.5
 MAXITER = {"cg": "20000"}
 P_TOLERANCE = 1e-6    # fix dpoly/check's default: a minimum farther from P0 is reported failed
 
-REFERENCE = {"ftol": "1e-12", "min": "fire/nph", "delta_a": "0.5", "refine": "0", "ranks": 1}
+REFERENCE = {"ftol": "1e-12", "min": "fire/nph", "delta_a": "0.5", "refine": "none", "ranks": 1}
 BASE = dict(REFERENCE, ftol="1e-10")    # what the knobs other than ftol change
 KNOBS = [("ftol", ["1e-6", "1e-8", "1e-10"]), ("min", ["cg"]), ("delta_a", ["0.25", "1.0"]),
-         ("refine", ["3", "4"]), ("ranks", [2])]
+         ("refine", ["published", "consistent"]), ("ranks", [2])]
 
 
 def run(lmp, cells, setting, workroot, mpirun="mpirun"):

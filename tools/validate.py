@@ -120,13 +120,13 @@ def main():
 
     jobs = []
     for seed in SEEDS:
-        jobs.append((f"refined_N64_{seed}", 64, "default", seed, steps64, 3))
-        jobs.append((f"default_N64_{seed}", 64, "default", seed, steps64, 0))
-    jobs.append(("paper_N64", 64, "paper", SEEDS[0], steps64, 0))
+        jobs.append((f"refined_N64_{seed}", 64, "default", seed, steps64, "published"))
+        jobs.append((f"default_N64_{seed}", 64, "default", seed, steps64, "none"))
+    jobs.append(("paper_N64", 64, "paper", SEEDS[0], steps64, "none"))
     for pset in SENSITIVITY:
         steps = min(MAX_STEPS, int(round(40 * 0.5 / DELTA_A.get(pset, 0.5))))
         for seed in SEEDS[:2]:
-            jobs.append((f"{pset}_N16_{seed}", 16, pset, seed, 3 if args.quick else steps, 0))
+            jobs.append((f"{pset}_N16_{seed}", 16, pset, seed, 3 if args.quick else steps, "none"))
 
     runs = {}
     with tempfile.TemporaryDirectory() as workroot:
@@ -223,8 +223,8 @@ def write_report(runs, out, quick):
              "; every number below comes from its runs of `examples/mesophyll/in.mesophyll`. "
              "Seeds are those of bond breaking; each size has one initial tissue "
              "(`examples/tissue`). phi is the patch packing fraction, as in the paper.", "",
-             "The main example, `examples/mesophyll/in.mesophyll`, splits void segments longer "
-             "than 3 vertex radii (fix dpoly/refine), as the published code does; the runs "
+             "The main example, `examples/mesophyll/in.mesophyll`, inserts vertices as the "
+             "published code does (fix dpoly/refine rules published); the runs "
              "without insertion keep 32 vertices per cell. The sensitivity sets and the rule "
              "sets below run without insertion.", ""]
     for label, prefix, _ in variants:
@@ -285,9 +285,28 @@ def write_report(runs, out, quick):
                      f"{int(x['bonds'][-1])} | {x['dphi_plus'][-1]:.4f} | "
                      f"{np.max(np.abs(x['P'] / 1e-3 - 1)):.1e} | {x['failed_checks']} |")
     lines += failure_section(runs)
-    with open(os.path.join(out, "validation.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(f"wrote {os.path.join(out, 'validation.md')} and three PNGs")
+    # the comparison with the published code (part D, --published) is kept as it was
+    path = os.path.join(out, "validation.md")
+    _, kept = split_published_section(path)
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n" + kept)
+    print(f"wrote {path} and three PNGs")
+
+
+PUB_BEGIN, PUB_END = "<!-- published: tools/validate.py --published -->", "<!-- /published -->"
+
+
+def split_published_section(path):
+    """(the text of validation.md without part D's section, that section with its markers)."""
+    if not os.path.exists(path):
+        return "", ""
+    with open(path) as f:
+        text = f.read()
+    start, end = text.find(PUB_BEGIN), text.find(PUB_END)
+    if start < 0 or end < start:
+        return text, ""
+    end += len(PUB_END) + 1
+    return text[:start] + text[end:], text[start:end]
 
 
 def failure_section(runs):
@@ -373,7 +392,8 @@ def published_comparison(lmp, args):
     pkg = {}
     with tempfile.TemporaryDirectory() as workroot:
         with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            futures = [pool.submit(run, lmp, f"published_pkg_N16_{s}", 16, "default", s, steps, 3,
+            futures = [pool.submit(run, lmp, f"published_pkg_N16_{s}", 16, "default", s, steps,
+                                   "published",
                                    workroot, args.cache, PUB_STOP) for s in seeds]
             for f in concurrent.futures.as_completed(futures):
                 name, r = f.result()
@@ -445,9 +465,13 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
         ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "published_comparison.png"), dpi=150)
-    with open(os.path.join(out, "published_comparison.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(f"wrote {os.path.join(out, 'published_comparison.md')} and its PNG")
+    # part D's section of validation.md, replaced in place (appended the first time)
+    path = os.path.join(out, "validation.md")
+    rest, _ = split_published_section(path)
+    with open(path, "w") as f:
+        f.write(rest.rstrip("\n") + "\n\n" + PUB_BEGIN + "\n" + "\n".join(lines) + "\n" +
+                PUB_END + "\n")
+    print(f"wrote the published code's section of {path} and published_comparison.png")
 
 
 if __name__ == "__main__":
