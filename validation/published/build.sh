@@ -4,7 +4,8 @@
 #
 #   build.sh [REPO] [--no-insertion] [--out DIR]
 #
-# REPO: a clone or bare mirror of jacktreado/dpm (default /work/.mirror/jacktreado+dpm/repo); its
+# REPO: a clone or bare mirror of jacktreado/dpm (git clone https://github.com/jacktreado/dpm;
+# default: $DPM_REPO; the data here were made from commit 6c22e4e, README.md); its
 # HEAD is exported with `git archive` into DIR/src-<commit> (default DIR: /tmp/published-dpm) and
 # built there, so nothing of the published code enters this repository. Writes DIR/meso_<commit>
 # and prints its path.
@@ -15,7 +16,7 @@
 # `if (NVTOT < NVMAX)`). The change is made by sed in the scratch copy and shown as a diff.
 set -euo pipefail
 
-repo=/work/.mirror/jacktreado+dpm/repo
+repo=${DPM_REPO:-}
 out=/tmp/published-dpm
 noinsert=0
 while [ $# -gt 0 ]; do
@@ -28,6 +29,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 
+[ -n "$repo" ] || { echo "build.sh: give a clone of jacktreado/dpm (argument REPO or DPM_REPO)" >&2; exit 2; }
 commit=$(git -C "$repo" rev-parse HEAD)
 src="$out/src-$commit"
 mkdir -p "$out"
