@@ -14,7 +14,8 @@ are the originals plus k x (largest ID), molecule IDs plus k x (largest molecule
 wrapped into the new box with image flags that keep every ring whole. Every per-atom section
 other than Atoms (Velocities, and the sections of fix property/atom: Vertices, Stiffness, ...) is
 copied with the IDs. The copy's energy per cell and pressure equal the original's (ctest
-mesophyll.replicate_tissue).
+mesophyll.replicate_tissue). Limits: cells narrower than half the box (a cell's bond to its own
+image stays in its copy), no Type Labels sections.
 """
 import argparse
 import sys
@@ -66,12 +67,15 @@ def nearest_copy(shift, copies):
 def replicate(data, nx, ny):
     if any(len(w) > 3 and w[3] in ("xy", "xz", "yz") for w in data.header):
         raise SystemExit("replicate_tissue: triclinic boxes are not supported")
-    if data.styles.get("Atoms", "molecular") != "molecular":
-        raise SystemExit(f"replicate_tissue: atom style {data.styles['Atoms']}; "
-                         "only molecular is supported")
+    style = data.styles.get("Atoms") or "molecular"
+    if style != "molecular":
+        raise SystemExit(f"replicate_tissue: atom style {style}; only molecular is supported")
     (xlo, xhi), (ylo, yhi) = data.bounds("x"), data.bounds("y")
     lx, ly = xhi - xlo, yhi - ylo
-    atoms = {int(w[0]): w for w in data.sections["Atoms"]}
+    # id mol type x y z, then the image flags (0 0 0 where the file has none)
+    atoms = {int(w[0]): (w + ["0", "0", "0"])[:9] for w in data.sections["Atoms"]}
+    if any(int(w[1]) < 1 for w in atoms.values()):
+        raise SystemExit("replicate_tissue: every vertex needs a molecule (cell) ID >= 1")
     if len(atoms) != data.count("atoms"):
         raise SystemExit(f"replicate_tissue: {len(atoms)} atoms listed, the header says "
                          f"{data.count('atoms')}")
@@ -94,7 +98,7 @@ def replicate(data, nx, ny):
             x = float(w[3]) + sa * lx
             y = float(w[4]) + sb * ly
             out_atoms.append([str(i + k * id_step), str(int(w[1]) + k * mol_step), w[2],
-                              f"{x:.16g}", f"{y:.16g}", w[5], str(fx), str(fy), w[8]])
+                              repr(x), repr(y), w[5], str(fx), str(fy), w[8]])
 
     def partner_shift(i, j, a, b):
         """The copy of atom j bonded to copy (a, b) of atom i: the nearest image of j."""
@@ -144,9 +148,9 @@ def replicate(data, nx, ny):
         if " ".join(words[1:]) in ("atoms", "bonds", "angles", "dihedrals", "impropers"):
             header.append([str(int(words[0]) * len(copies))] + words[1:])
         elif words[2:] == ["xlo", "xhi"]:
-            header.append([f"{xlo:.16g}", f"{xlo + nx * lx:.16g}", "xlo", "xhi"])
+            header.append([repr(xlo), repr(xlo + nx * lx), "xlo", "xhi"])
         elif words[2:] == ["ylo", "yhi"]:
-            header.append([f"{ylo:.16g}", f"{ylo + ny * ly:.16g}", "ylo", "yhi"])
+            header.append([repr(ylo), repr(ylo + ny * ly), "ylo", "yhi"])
         else:
             header.append(words)
     return header, sections

@@ -107,7 +107,9 @@ void FixMesophyllGrow::init()
    dl_i is added to the l0 of both segments at i. A run's length is the boundary it exposes: each
    of its vertices contributes half of each of its two segments. theta0 of void vertices drops by
    c_B dl_std/n, not below theta0_min; then every theta0 relaxes toward its ring neighbours by
-   (dl_std/n) times the two differences, all from the values before smoothing.
+   (dl_std/n) times the two differences, all from the values before smoothing. rules published
+   (isometric above calA_max, as code) changes three things to the published code's forms, in
+   grow_ring(): run lengths, the drift at theta0_min, and an in-place smoothing sweep.
 ------------------------------------------------------------------------- */
 
 int FixMesophyllGrow::act()
