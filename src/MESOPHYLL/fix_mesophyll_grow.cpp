@@ -225,9 +225,12 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
     else    // the published code: the full step from above the bound, to the bound from below
       angle[k] = angle[k] > theta0_min ? angle[k] - drift : theta0_min;
   };
-  std::vector<double> smoothed(n);
-  for (int k = 0; k < n; k++) {
+  // theta0 at k relaxed toward its ring neighbours' current values
+  auto relaxed = [&](int k) {
     const int before = (k + n - 1) % n, after = (k + 1) % n;
+    return angle[k] + smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+  };
+  for (int k = 0; k < n; k++) {
     if (is_void(k)) {
       void_vertices++;
       if (shape < shape_max)
@@ -239,17 +242,13 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
     }
     // the published code smooths in place, vertex by vertex in ring order from the cell's first
     // (smallest ID): the next vertex is still undrifted, the previous one done (but at the ends)
-    if (as_published)
-      angle[k] += smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+    if (as_published) angle[k] = relaxed(k);
   }
+  // otherwise all from the drifted values (angle is not changed below)
   for (int k = 0; k < n; k++) {
-    const int before = (k + n - 1) % n, after = (k + 1) % n;
-    length_growth[ring[k]] = dl[k] + dl[after];    // segment k -> k+1 touches both vertices
-    smoothed[k] = as_published
-        ? angle[k]
-        : angle[k] + smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+    length_growth[ring[k]] = dl[k] + dl[(k + 1) % n];    // segment k -> k+1 touches both
+    new_angle[ring[k]] = as_published ? angle[k] : relaxed(k);
   }
-  for (int k = 0; k < n; k++) new_angle[ring[k]] = smoothed[k];
 }
 
 /* ----------------------------------------------------------------------
