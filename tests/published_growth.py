@@ -21,7 +21,9 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
 from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
+from lammps_data import DataFile    # noqa: E402
 
 TOLERANCE = 1e-5
 GROW = """fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4 &
@@ -40,18 +42,8 @@ write_data grown.data nocoeff
 
 def vertices(path):
     """{atom ID: (sigma, l0, theta0, a0)} of a data file's Vertices section."""
-    values, inside = {}, False
-    with open(path) as f:
-        for line in f:
-            words = line.split()
-            if words and words[0] == "Vertices":
-                inside = True
-                continue
-            if inside and words:
-                if not words[0].isdigit():
-                    break
-                values[int(words[0])] = tuple(float(v) for v in words[1:5])
-    return values
+    return {int(w[0]): tuple(float(v) for v in w[1:5])
+            for w in DataFile(path).sections["Vertices"]}
 
 
 def largest_difference(args, rules, work):

@@ -51,27 +51,15 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import make_cells  # noqa: E402
+from lammps_data import DataFile  # noqa: E402
 
 ANGLE_MAX = 3.0    # |theta0| bound of the resampled state (fix dpoly/cells needs (-pi, pi])
 
 
 def read_sections(path):
     """Header lines and {section name: [rows of words]} of a LAMMPS data file."""
-    header, sections, name = [], {}, None
-    with open(path) as f:
-        f.readline()
-        for line in f:
-            words = line.split("#")[0].split()
-            if not words:
-                continue
-            if len(words) == 1 and words[0][0].isalpha():
-                name = words[0]
-                sections[name] = []
-            elif name is None:
-                header.append(words)
-            else:
-                sections[name].append(words)
-    return header, sections
+    data = DataFile(path)
+    return data.header, data.sections
 
 
 def read_tissue(path):
