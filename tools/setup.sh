@@ -3,7 +3,12 @@
 # Idempotent: a second run only rebuilds what changed (ccache makes a fresh clone fast).
 #
 #   tools/setup.sh [--serial] [--build-dir DIR] [--lammps-source DIR] [--lammps-tarball FILE]
-#                  [--no-install] [--run-example] [--sanitize | --sanitize-package]
+#                  [--no-install] [--run-example] [--sanitize | --sanitize-package] [--python]
+#
+# liblammps is a shared library (lmp, the tests and LAMMPS's Python module use the same one);
+# --python also installs LAMMPS's own Python package `lammps`, from the LAMMPS source tree, into
+# the virtual environment BUILD/venv (Debian's python3-venv, no downloads); examples/python/ runs
+# with BUILD/venv/bin/python. Sanitizer builds link LAMMPS statically and have no Python module.
 #
 # --sanitize builds with AddressSanitizer and UndefinedBehaviorSanitizer (CMake option
 # MESOPHYLL_SANITIZE) in build-sanitize/ (unless --build-dir names another), leaving build/ as is;
@@ -23,6 +28,7 @@ sanitize=OFF
 sanitize_lammps=ON
 install=1
 run_example=0
+python_module=0
 lammps_source=${LAMMPS_SOURCE_DIR:-}
 lammps_tarball=${LAMMPS_TARBALL:-}
 cache=${MESOPHYLL_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/mesophyll}
@@ -37,7 +43,8 @@ while [ $# -gt 0 ]; do
     --run-example) run_example=1 ;;
     --sanitize) sanitize=ON; sanitize_lammps=ON ;;
     --sanitize-package) sanitize=ON; sanitize_lammps=OFF ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    --python) python_module=1 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "setup.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -58,6 +65,7 @@ tarballs=(
 packages=(build-essential cmake ninja-build ccache git libopenmpi-dev openmpi-bin libeigen3-dev
           libgtest-dev libgmock-dev libyaml-dev librandom123-dev libspectra-dev
           python3 python3-numpy python3-matplotlib python3-scipy python3-skimage python3-vtk9
+          python3-venv python3-setuptools python3-wheel
           ffmpeg xz-utils ca-certificates)
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -165,13 +173,45 @@ fi
 export CCACHE_BASEDIR="$here" CCACHE_NOHASHDIR=1
 ccache --max-size=4G >/dev/null 2>&1 || true
 
-say "Configuring (LAMMPS in $lammps_dir, MPI $mpi, sanitizers $sanitize)"
+# shared liblammps; the sanitizer builds stay static, as their leak checks were set up that way
+shared=ON
+[ "$sanitize" = ON ] && shared=OFF
+if [ "$python_module" = 1 ] && [ "$shared" = OFF ]; then
+  echo "setup.sh: --python needs the shared library, which sanitizer builds do not make" >&2; exit 2
+fi
+
+say "Configuring (LAMMPS in $lammps_dir, MPI $mpi, sanitizers $sanitize, shared library $shared)"
 cmake -S "$here" -B "$build_dir" -G Ninja -DMESOPHYLL_LAMMPS_DIR="$lammps_dir" -DBUILD_MPI="$mpi" \
-      -DMESOPHYLL_SANITIZE="$sanitize" -DMESOPHYLL_SANITIZE_LAMMPS="$sanitize_lammps" >/dev/null
+      -DMESOPHYLL_SANITIZE="$sanitize" -DMESOPHYLL_SANITIZE_LAMMPS="$sanitize_lammps" \
+      -DBUILD_SHARED_LIBS="$shared" >/dev/null
 say "Building"
 cmake --build "$build_dir" --parallel "$(nproc)"
 ccache --show-stats 2>/dev/null | grep -Ei 'hit|miss' | head -n 4 || true
 echo "LAMMPS with MESOPHYLL: $build_dir/lmp"
+
+# LAMMPS's Python package from its source tree into BUILD/venv, offline: pip builds it from a
+# copy of python/ with the system's setuptools (--no-index --no-build-isolation), and its
+# liblammps.so is a link to this build's, so a rebuild needs no reinstall. LAMMPS's own
+# install.py would fetch pip, build and wheel from PyPI.
+install_python_module() {
+  local venv="$build_dir/venv" stage="$build_dir/python-package" site
+  say "LAMMPS's Python module into $venv"
+  [ -x "$venv/bin/python" ] || /usr/bin/python3 -m venv --system-site-packages "$venv"
+  rm -rf "$stage"; cp -r "$lammps_dir/python" "$stage"
+  (cd "$stage" && LAMMPS_VERSION_FILE="$lammps_dir/src/version.h" \
+     "$venv/bin/python" -m pip install --quiet --no-index --no-build-isolation --no-deps \
+     --force-reinstall .)
+  rm -rf "$stage"
+  site=$("$venv/bin/python" -c 'import lammps, os; print(os.path.dirname(lammps.__file__))')
+  ln -sf "$build_dir/liblammps.so" "$site/liblammps.so"
+  "$venv/bin/python" -c 'import lammps
+lmp = lammps.lammps(cmdargs=["-nocite", "-log", "none", "-screen", "none"])
+assert "MESOPHYLL" in lmp.installed_packages, lmp.installed_packages
+print("lammps", lmp.version(), "with MESOPHYLL, from", lammps.__file__)
+lmp.close()'
+  echo "Python: $venv/bin/python examples/python/grow_tissue.py (or source $venv/bin/activate)"
+}
+[ "$python_module" = 1 ] && install_python_module
 
 if [ "$run_example" = 1 ]; then
   if [ "$mpi" = ON ]; then

@@ -45,7 +45,7 @@ class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly
 
   // Collective: every adhesive bond of the system with its current stretch, sorted by IDs.
   std::vector<DPoly::AdhesiveBond> gather_bonds() override;
-  bool is_adhesive_type(int type) const { return allocated && type > 0 && setflag[type]; }
+  bool is_adhesive_type(int type) const override { return allocated && type > 0 && setflag[type]; }
 
   // The current bond counts, and a collective recount from the bonds (DPoly::CellAdhesion).
   const DPoly::AdhesionCounts &counts() const override { return contacts; }

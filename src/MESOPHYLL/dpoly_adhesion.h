@@ -71,6 +71,8 @@ namespace DPoly {
     virtual void recount() = 0;
     // Collective: every adhesive bond of the system at its current length, sorted by IDs.
     virtual std::vector<AdhesiveBond> gather_bonds() = 0;
+    // Whether bonds of this bond type are adhesive bonds of this style.
+    virtual bool is_adhesive_type(int type) const = 0;
   };
 
   // The cell-adhesion bond style of this LAMMPS instance, alone or in bond_style hybrid, or

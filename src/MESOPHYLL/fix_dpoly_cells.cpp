@@ -11,6 +11,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_image_check.h"
 #include "dpoly_laws.h"
 #include "dpoly_measure.h"
 #include "dpoly_ring.h"
@@ -43,7 +44,8 @@ struct VertexRecord {
 }    // namespace
 
 FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0), checked_atoms(-1)
+    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0), checked_atoms(-1),
+    image_check(new DPoly::AdhesiveBondsImageCheck(lmp))
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -72,6 +74,8 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
 }
 
+FixDPolyCells::~FixDPolyCells() = default;
+
 FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 {
   auto hubs = lmp->modify->get_fix_by_style("^dpoly/cells$");
@@ -81,7 +85,9 @@ FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 
 int FixDPolyCells::setmask()
 {
-  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR;
+  // PRE_EXCHANGE only for setup_pre_exchange(): pre_exchange() itself does nothing
+  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR |
+      PRE_EXCHANGE | MIN_PRE_EXCHANGE;
 }
 
 void FixDPolyCells::init()
@@ -131,6 +137,25 @@ std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
                      return a->stage() < b->stage();
                    });
   return stages;
+}
+
+/* ----------------------------------------------------------------------
+   these two bracket LAMMPS's image-flag check at the setup of a run or minimization: the
+   adhesive bonds are left out of it once the reason for its warning has been given
+   (dpoly_image_check.h)
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::setup_pre_exchange()
+{
+  image_check->before_check();
+}
+
+void FixDPolyCells::setup_pre_neighbor()
+{
+  image_check->after_check();
+  if (image_check->explained()) return;
+  share_unwrapped_positions();
+  image_check->explain_once(unwrapped);
 }
 
 // before the first force evaluation of a run, so that every style sees current cells

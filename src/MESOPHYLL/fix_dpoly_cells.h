@@ -14,14 +14,16 @@ FixStyle(dpoly/cells,FixDPolyCells);
 
 #include "fix.h"
 
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 namespace LAMMPS_NS {
 namespace DPoly {
+  class AdhesiveBondsImageCheck;
   class TissueMeasure;
-}
+}    // namespace DPoly
 
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
 // counter-clockwise ring), checks them, and adds the per-cell area term
@@ -32,9 +34,12 @@ namespace DPoly {
 class FixDPolyCells : public Fix {
  public:
   FixDPolyCells(class LAMMPS *, int, char **);
+  ~FixDPolyCells() override;
 
   int setmask() override;
   void init() override;
+  void setup_pre_exchange() override;
+  void setup_pre_neighbor() override;
   void setup_pre_force(int) override;
   void setup(int) override;
   void min_setup(int) override;
@@ -95,6 +100,8 @@ class FixDPolyCells : public Fix {
   // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
   std::vector<int> checked_next;
   int checked_atoms;
+  // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
+  std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
 
   std::vector<class FixDPolyStage *> find_stages();
   std::vector<DPoly::TissueMeasure *> find_measures();

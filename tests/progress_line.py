@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""The main example's progress line: one per growth step, with the growth table's values.
+
+    progress_line.py --lmp BUILD/lmp --example examples/mesophyll [--steps 2] [--np N ...]
+
+Runs in.mesophyll_short for a few growth steps and checks that its log has exactly one line
+"growth step k/K: P .. phi .. phi_patch .. ... <min_style> iterations N; A min so far, about B min
+left (estimate: S s per growth step so far x L steps left)" per step, in order, whose phi,
+phi_patch and iterations are those of the growth table the same run wrote, with L = K - k,
+S > 0 and finite, A = S k / 60 and B = S L / 60 to their printed digits, A not falling.
+Standard library only (regression.py's launcher).
+"""
+import argparse
+import math
+import os
+import re
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import regression    # noqa: E402
+
+LINE = re.compile(r"^growth step (\d+)/(\d+): P (\S+) phi (\S+) phi_patch (\S+) <calA> \S+ <z> \S+ "
+                  r"bonds \S+ (\S+) iterations (\d+); (\S+) min so far, about (\S+) min left "
+                  r"\(estimate: (\S+) s per growth step so far x (\d+) steps left\)$")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--example", required=True)
+    p.add_argument("--steps", type=int, default=2)
+    regression.add_launcher_arguments(p)
+    args = p.parse_args()
+    args.lmp = os.path.abspath(args.lmp)
+    args.input = "in.mesophyll_short"
+    args.var = [("steps", str(args.steps)), ("restart_every", "0")]
+
+    problems = []
+    with tempfile.TemporaryDirectory() as work:
+        log = regression.run_example(args, work, "log.progress")
+        with open(log) as f:
+            lines = [m for m in (LINE.match(line.rstrip("\n")) for line in f) if m]
+        with open(os.path.join(work, "growth.N16.txt")) as f:
+            table = [line.split() for line in f if not line.startswith("#")]
+    if len(lines) != args.steps:
+        problems.append(f"{len(lines)} progress lines, expected {args.steps}")
+    so_far_before = 0.0
+    for k, (m, row) in enumerate(zip(lines, table), start=1):
+        step, steps, _, phi, phi_patch, style, iterations, so_far, left, per_step, steps_left = \
+            m.groups()
+        if (int(step), int(steps)) != (k, args.steps):
+            problems.append(f"line {k} says growth step {step}/{steps}")
+        if style != "fire/nph":
+            problems.append(f"step {k}: minimizer '{style}', the example's is fire/nph")
+        for name, printed, recorded in (("phi", phi, row[2]), ("phi_patch", phi_patch, row[3])):
+            if abs(float(printed) - float(recorded)) > 0.5e-4 + 1e-12:
+                problems.append(f"step {k}: {name} {printed}, growth table {recorded}")
+        if iterations != row[8]:
+            problems.append(f"step {k}: {iterations} iterations, growth table {row[8]}")
+        if int(steps_left) != args.steps - k:
+            problems.append(f"step {k}: {steps_left} steps left, expected {args.steps - k}")
+        so_far, left, per_step = float(so_far), float(left), float(per_step)
+        if not (math.isfinite(per_step) and per_step > 0):
+            problems.append(f"step {k}: {per_step} s per growth step")
+            continue
+        # each printed to 0.1: the seconds per step to 0.05 s, the minutes to 0.05 min
+        for name, value, count in (("so far", so_far, k), ("left", left, int(steps_left))):
+            expected = per_step * count / 60
+            if abs(value - expected) > 0.05 + 0.05 * count / 60 + 1e-9:
+                problems.append(f"step {k}: {value} min {name}, {expected:.3f} from the mean")
+        if so_far < so_far_before:
+            problems.append(f"step {k}: {so_far} min so far, less than the step before")
+        so_far_before = so_far
+    for problem in problems:
+        print("FAIL:", problem)
+    if problems:
+        return 1
+    print(f"OK: {len(lines)} progress lines, phi, phi_patch and iterations as in the growth table")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
