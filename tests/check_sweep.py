@@ -7,10 +7,11 @@
 Plans examples/sweep/tiny.sweep (16 cells, 2 growth steps, beta 30 and 300 x seeds 11 and 12)
 with tools/sweep.py and runs examples/sweep/in.sweep as `mpirun -np 2 lmp -partition 2x1`:
 
-  straight     the whole sweep at once: every run finished;
+  straight     the whole sweep at once: every run finished; started again, it skips them all;
   interrupted  the same plan, sent SIGKILL as soon as one run has written its first restart file
-               and is not finished, then the same command again: the runs finished before the
-               kill are skipped (their growth tables untouched, one start each), the killed one
+               and is not finished (and another run is), then the same command again: the runs
+               finished before the kill are skipped (their growth tables untouched, one start
+               each), the killed one
                resumes from its restart file, and every growth table equals the straight
                sweep's (tests/resume.py's tolerances);
   failures     a sweep of two runs on 2 partitions: one from a tissue with a ring folded through
@@ -82,16 +83,18 @@ def table_rows(path):
 
 
 def kill_when_restarted(args, folder):
-    """Start the sweep, SIGKILL it once a run has restart.N16.1 but no marker; return the runs
-    finished before the kill and the killed ones."""
+    """Start the sweep, SIGKILL it once a run is finished and another has restart.N16.1 but no
+    marker; return the runs finished before the kill and the killed ones."""
     command, env = sweep_command(args)
     proc = subprocess.Popen(command, cwd=folder, env=env, start_new_session=True,
                             stdout=subprocess.DEVNULL)
     deadline, caught = time.time() + args.timeout, None
     while proc.poll() is None and time.time() < deadline and caught is None:
+        done = [r for r in runs_of(folder)
+                if os.path.exists(os.path.join(folder, "runs", r, "finished"))]
         for run in runs_of(folder):
             path = os.path.join(folder, "runs", run)
-            if os.path.exists(os.path.join(path, "restart.N16.1")) and \
+            if done and os.path.exists(os.path.join(path, "restart.N16.1")) and \
                     not os.path.exists(os.path.join(path, "finished")):
                 caught = run
                 break
@@ -143,6 +146,13 @@ def check_summary(folder):
         log = open(os.path.join(run, "log.lammps")).read()
         failed = log.count("; FAILED;")
         name = f"run {row['run']}"
+        # the run ran with its own values, not those a previous run of its partition left
+        used = [line.split() for line in log.splitlines()
+                if line.split()[:1] == ["fix"] and line.split()[3:4] == ["mesophyll/break"]
+                and "$" not in line]
+        expect(used and used[-1][4] == row["seed"] and used[-1][6] == row["beta"],
+               f"{name}: planned seed {row['seed']} beta {row['beta']}, its log ran "
+               f"{' '.join(used[-1]) if used else 'no fix mesophyll/break'}")
         expect(row["status"] == ("ok" if failed == 0 else row["status"]) and
                row["status"] != "unfinished", f"{name}: status {row['status']} with {failed} "
                f"failed checks in its log")
@@ -241,6 +251,15 @@ def main():
         run_sweep(args, straight)
         expect(all(os.path.exists(os.path.join(straight, "runs", r, "finished"))
                    for r in runs_of(straight)), "straight: not every run finished")
+        # the finished sweep started again does nothing: every run is skipped
+        tables = {r: os.stat(os.path.join(straight, "runs", r, "growth.N16.txt")).st_mtime_ns
+                  for r in runs_of(straight)}
+        run_sweep(args, straight)
+        for r in runs_of(straight):
+            again = os.stat(os.path.join(straight, "runs", r, "growth.N16.txt")).st_mtime_ns
+            starts = open(os.path.join(straight, "runs", r, "times.txt")).read().count("start")
+            expect(again == tables[r] and starts == 1,
+                   f"straight run {r}: run again when the finished sweep was started again")
 
         before, killed = kill_when_restarted(args, interrupted)
         print(f"killed the sweep with runs {before} finished and {killed} between their first "
