@@ -19,7 +19,8 @@ with tools/sweep.py and runs examples/sweep/in.sweep as `mpirun -np 2 lmp -parti
                read (the error stops the job); run again, the sweep completes and the summary
                says failed and error.
 
-The summary of the interrupted sweep must say what the growth tables say: steps, delta_phi_plus,
+plan must refuse bad sweep files with a message naming the bad value. The summary of the
+interrupted sweep must say what the growth tables say: steps, delta_phi_plus,
 z at the step nearest phi_patch = 0.5, delta_A early and late against the reference file
 (recomputed here), and status ok where the log has no failed check. SWEEP_KEEP=DIR keeps the
 sweeps in DIR. Standard library only (tools/sweep_plot.py's part is skipped without
@@ -215,6 +216,28 @@ def check_plots(folder):
            f"curves.csv: beta=30 at porosity 0.0375: {curve}, growth tables {samples}")
 
 
+def check_bad_plans(scratch):
+    """plan refuses a bad sweep file, naming what is wrong."""
+    tissue = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
+    cases = [("colour red", "unknown keyword 'colour'"),
+             ("vary bogus 1 2", "'bogus' is neither a variable"),
+             ("set nosuchset", "the set 'nosuchset' is not in"),
+             ("seeds 0", "a seed must be a positive integer, not '0'"),
+             ("vary seed 1 2", "'seed' is set by the sweep itself"),
+             ("growth lots", "takes a number and an integer, not 'lots'"),
+             ("tissue missing.data", "missing.data does not exist")]
+    for k, (line, message) in enumerate(cases):
+        path = os.path.join(scratch, f"bad{k}.sweep")
+        with open(path, "w") as f:
+            f.write(f"tissue {tissue}\nseeds 1\n{line}\n")
+        result = subprocess.run([sys.executable, SWEEP, "plan", path,
+                                 os.path.join(scratch, f"bad{k}")], capture_output=True, text=True)
+        expect(result.returncode != 0 and message in result.stderr and
+               "Traceback" not in result.stderr,
+               f"plan of a sweep file with '{line}': exit code {result.returncode}, "
+               f"'{result.stderr.strip()}' (expected '{message}')")
+
+
 def tangled_tissue(source, target):
     """source with cell 1's vertices 9..24 in reverse order along its ring: the ring runs out to
     vertex 24's place and back, its segments 8-9 and 24-25 cross."""
@@ -245,6 +268,7 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         if os.environ.get("SWEEP_KEEP"):    # a folder to keep the sweeps in, to look at
             scratch = os.environ["SWEEP_KEEP"]
+        check_bad_plans(scratch)
         straight, interrupted = (os.path.join(scratch, n) for n in ("straight", "interrupted"))
         for folder in (straight, interrupted):
             plan(TINY, folder)

@@ -5,13 +5,13 @@
     cd DIR && mpirun -np P lmp -partition Px1 -in ROOT/examples/sweep/in.sweep
     tools/sweep.py summary DIR [--reference FILE] [--split POROSITY]   one row per run
 
-plan reads a sweep file (format: examples/sweep/README.md; doc/Howto_mesophyll.rst, "Sweeps")
-and writes DIR/plan.lmp (the number of runs and the commands in.sweep calls), DIR/runs.csv (one
-row per run: its grid point, seed and initial tissue) and, per run, DIR/runs/<id>/run.lmp (the
-variables of examples/mesophyll/in.mesophyll for that run, after deleting those a previous run
-of the same partition left) and run.json. in.sweep hands the runs out to the partitions with a
-uloop variable; before each run it calls `sweep.py state` and after it `sweep.py finish` in the
-run's folder:
+plan reads a sweep file (format: doc/Howto_sweep.rst) and writes DIR/plan.lmp (the number of
+runs and the commands in.sweep calls), DIR/runs.csv (one row per run: its grid point, seed and
+initial tissue) and, per run, DIR/runs/<id>/run.lmp (the variables of the protocol,
+examples/mesophyll/in.mesophyll, for that run, after deleting those a previous run of the same
+partition left) and run.json. in.sweep hands the runs out to the partitions with a uloop
+variable; before each run it calls `sweep.py state` and after it `sweep.py finish` in the run's
+folder:
 
     state    writes state.lmp: skip a finished run, resume from the newest restart file below
              the last growth step, or start afresh; a run whose previous attempt stopped with a
@@ -21,15 +21,14 @@ run's folder:
              once that file exists: a killed run never has it)
 
 summary reads every run's growth table, log and marker and writes DIR/summary.csv and
-DIR/points.csv (ensemble mean and standard deviation per grid point, over the runs with status
-ok, and with --accept unconverged those too), and prints the table. Per run: status (ok; unconverged: minima that did not converge or
-missed P0; failed: minima with tangled or inverted rings, non-finite values or a packing
-fraction out of range, which are no result; error: LAMMPS stopped; unfinished), growth steps,
-delta_A early and late (RMS difference of the mean shape parameter from reference points
-(porosity, calA), each matched with the growth step of nearest porosity phi_max - phi_patch,
-phi_max = 0.975), delta_phi_plus, z and phi_patch at the step nearest phi_patch = 0.5, failed
-checks, attempts, wall and loop seconds. Standard library only (numpy for summary's stds is not
-needed).
+DIR/points.csv (ensemble mean and standard deviation per grid point over the runs with status
+ok, with --accept unconverged those too) and prints the table. Per run: status (ok;
+unconverged: minima that did not converge or missed P0; failed: minima with tangled or inverted
+rings, non-finite values or a packing fraction out of range, which are no result; error: LAMMPS
+stopped; unfinished), growth steps, delta_A early and late (RMS difference of the mean shape
+parameter from reference points (porosity, calA), each matched with the growth step of nearest
+porosity phi_max - phi_patch, phi_max = 0.975), delta_phi_plus, z and phi_patch at the step
+nearest phi_patch = 0.5, failed checks, attempts, wall and loop seconds. Standard library only.
 """
 import argparse
 import csv
@@ -115,9 +114,15 @@ class SweepFile:
                         sys.exit(f"{where}: 'fixed' takes NAME VALUE pairs")
                     self.fixed.update(zip(values[::2], values[1::2]))
                 elif key == "growth":
-                    self.growth = (float(values[0]), int(values[1]) if len(values) > 1 else None)
-                    if self.growth[0] <= 0:
-                        sys.exit(f"{where}: the total growth must be > 0, not {values[0]}")
+                    try:
+                        self.growth = (float(values[0]),
+                                       int(values[1]) if len(values) > 1 else None)
+                    except ValueError:
+                        sys.exit(f"{where}: 'growth TOTAL [MAX_STEPS]' takes a number and an "
+                                 f"integer, not '{' '.join(values)}'")
+                    if not self.growth[0] > 0 or (self.growth[1] or 1) < 1:
+                        sys.exit(f"{where}: the total growth and the step cap must be > 0, not "
+                                 f"'{' '.join(values)}'")
         for what, path_ in (("protocol", self.protocol), ("parameters", self.parameters)):
             if not os.path.isfile(path_):
                 sys.exit(f"{self.path}: the {what} file {path_} does not exist")
