@@ -427,8 +427,9 @@ def summarize_run(folder, reference):
         status = "ok"
     wall, attempts = read_times(os.path.join(folder, "times.txt"))
     row.update(status=status, steps=steps, failed_checks=len(failures),
-               first_failure=(f"minimum {failures[0].minimum}: {failures[0].problems}"
-                              if failures else (finished if status == "error" else "")),
+               first_failure=(finished if status == "error" else
+                              f"minimum {failures[0].minimum}: {failures[0].problems}"
+                              if failures else ""),
                attempts=attempts, wall_s=wall,
                loop_s=sum(loop.seconds for loop in mesophyll_run.loop_times(text)))
     if steps and finite:
@@ -443,7 +444,7 @@ def summarize_run(folder, reference):
 COLUMNS = ["run", "point", "seed", "tissue", "N", "status", "steps", "steps_planned",
            "delta_A_early", "delta_A_late", "delta_phi_plus", "z_half", "phi_half", "phi_final",
            "calA_final", "failed_checks", "attempts", "wall_s", "loop_s", "first_failure"]
-STATS = ["delta_A_early", "delta_A_late", "delta_phi_plus", "z_half", "phi_final"]
+STATS = ["delta_A_early", "delta_A_late", "delta_phi_plus", "z_half", "phi_half", "phi_final"]
 
 
 def mean_std(values):
@@ -485,12 +486,12 @@ def summary(args):
             out.writerow([label] + [group[0].get(a, "") for a in axes] + [len(group)] + counts
                          + stats)
     print(f"{'run':>5} {'point':24} {'seed':>9} {'status':11} {'steps':>5} {'dA_early':>8} "
-          f"{'dA_late':>8} {'dphi+':>7} {'z(.5)':>5} {'failed':>6} {'wall_s':>8}")
+          f"{'dA_late':>8} {'dphi+':>7} {'z(.5)':>5} {'at phi':>6} {'failed':>6} {'wall_s':>8}")
     for r in rows:
         num = lambda key, spec: format(r[key], spec) if r.get(key) is not None else "-"  # noqa
         print(f"{r['run']:>5} {r['point'][:24]:24} {r['seed']:>9} {r['status']:11} "
               f"{r['steps']:>5} {num('delta_A_early', '8.4f')} {num('delta_A_late', '8.4f')} "
-              f"{num('delta_phi_plus', '7.4f')} {num('z_half', '5.2f')} "
+              f"{num('delta_phi_plus', '7.4f')} {num('z_half', '5.2f')} {num('phi_half', '6.3f')} "
               f"{r['failed_checks']:>6} {num('wall_s', '8.1f')}")
     counts = {s: sum(r["status"] == s for r in rows) for s in
               ("ok", "unconverged", "failed", "error", "unfinished")}

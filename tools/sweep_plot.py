@@ -8,10 +8,10 @@ Figs 4-6.
         delta_phi_plus and z near phi_patch = 0.5, on a log colour scale; --mark rings points
         (x,y) such as the caption's highlighted ones.
     tools/sweep_plot.py curves DIR [--point LABEL ...] [--reference FILE] [-o PNG]
-        mean calA against porosity 0.975 - phi_patch per grid point (default: every point),
-        averaged over its runs with status ok in porosity bins (--bin, default 0.025; the
-        growth steps of all runs that fall in a bin), the standard deviation as a band, the
-        reference points as markers.
+        mean calA against porosity 0.975 - phi_patch per grid point (default: every point), in
+        porosity bins (--bin, default 0.025): each run's growth steps in a bin averaged, then
+        the mean over the runs and their standard deviation as a band (where two runs or more
+        reach the bin), the reference points as markers.
     tools/sweep_plot.py against DIR --x P0 [-o PNG]
         delta_A early and late and delta_phi_plus against one grid axis (log), ensemble mean
         with the standard deviation as error bars.
@@ -109,7 +109,10 @@ def heatmaps(args, rows):
         positive = grid[np.isfinite(grid) & (grid > 0)]
         norm = mcolors.LogNorm(positive.min(), positive.max()) if positive.size else None
         shown = np.ma.masked_where(~np.isfinite(grid) | (grid <= 0), grid)
-        mesh = ax.pcolormesh(tile_edges(xs), tile_edges(ys), shown, norm=norm, cmap="viridis")
+        cmap = plt.get_cmap("viridis").copy()
+        cmap.set_bad("lightgrey")
+        ax.set_facecolor("lightgrey")
+        mesh = ax.pcolormesh(tile_edges(xs), tile_edges(ys), shown, norm=norm, cmap=cmap)
         if positive.size:
             fig.colorbar(mesh, ax=ax)
         ax.set_xscale("log")
@@ -132,7 +135,7 @@ def curves(args, rows):
     fig, ax = plt.subplots(figsize=(7, 5), constrained_layout=True)
     table = []
     for label in points:
-        samples = [[] for _ in bins[:-1]]
+        samples = [[] for _ in bins[:-1]]    # per bin: each run's mean calA in it
         runs = [r for r in rows if r["point"] == label]
         if not runs:
             sys.exit(f"no point '{label}' in the sweep (points: "
@@ -143,16 +146,16 @@ def curves(args, rows):
             growth = mesophyll_run.growth_table(os.path.join(
                 args.dir, "runs", r["run"], f"growth.N{r['N']}.txt"))
             porosity = sweep.PHI_MAX - np.array(growth["phi_patch"])
-            for p, calA in zip(porosity, growth["calA"]):
-                k = np.searchsorted(bins, p, side="right") - 1
-                if 0 <= k < len(samples):
-                    samples[k].append(calA)
+            index = np.searchsorted(bins, porosity, side="right") - 1
+            calA = np.array(growth["calA"])
+            for k in set(index[(index >= 0) & (index < len(samples))]):
+                samples[k].append(calA[index == k].mean())
         centres, means, stds = [], [], []
         for k, values in enumerate(samples):
             if values:
                 centres.append((bins[k] + bins[k + 1]) / 2)
                 means.append(np.mean(values))
-                stds.append(np.std(values, ddof=1) if len(values) > 1 else 0.0)
+                stds.append(np.std(values, ddof=1) if len(values) > 1 else np.nan)
                 table.append([label, centres[-1], means[-1], stds[-1], len(values)])
         centres, means, stds = map(np.array, (centres, means, stds))
         ok = sum(r["status"] in ACCEPT for r in runs)
