@@ -348,6 +348,8 @@ def finish(args):
 
 def read_reference(path, split):
     """[(porosity, calA, stage)] of a reference file: porosity calA [early|late] per line."""
+    if not os.path.isfile(path):
+        sys.exit(f"the reference file {path} does not exist")
     points = []
     with open(path) as f:
         for number, line in enumerate(f, 1):
@@ -459,6 +461,8 @@ def mean_std(values):
 
 def summary(args):
     reference = read_reference(args.reference, args.split)
+    if not os.path.isdir(os.path.join(args.dir, "runs")):
+        sys.exit(f"{args.dir} has no runs/ folder: plan a sweep into it first (sweep.py plan)")
     folders = sorted(os.path.join(args.dir, "runs", d)
                      for d in os.listdir(os.path.join(args.dir, "runs")))
     rows = [summarize_run(folder, reference) for folder in folders
