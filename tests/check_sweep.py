@@ -8,6 +8,8 @@ Plans examples/sweep/tiny.sweep (16 cells, 2 growth steps, beta 30 and 300 x see
 with tools/sweep.py and runs examples/sweep/in.sweep as `mpirun -np 2 lmp -partition 2x1`:
 
   straight     the whole sweep at once: every run finished; started again, it skips them all;
+  single       run 2 alone (lmp -in in.sweep -var run 2, one process, as a job-array task):
+               only it finishes, with the straight sweep's growth table;
   interrupted  the same plan, sent SIGKILL as soon as one run has written its first restart file
                and is not finished (and another run is), then the same command again: the runs
                finished before the kill are skipped (their growth tables untouched, one start
@@ -286,6 +288,18 @@ def main():
             starts = open(os.path.join(straight, "runs", r, "times.txt")).read().count("start")
             expect(again == tables[r] and starts == 1,
                    f"straight run {r}: run again when the finished sweep was started again")
+
+        # one run alone, as a job-array task runs it: lmp -in in.sweep -var run ID, no uloop
+        single = os.path.join(scratch, "single")
+        plan(TINY, single)
+        result = subprocess.run([args.lmp, "-log", "none", "-in", IN_SWEEP, "-var", "run", "2"],
+                                cwd=single, stdout=subprocess.DEVNULL, timeout=args.timeout)
+        done = [r for r in runs_of(single)
+                if os.path.exists(os.path.join(single, "runs", r, "finished"))]
+        expect(result.returncode == 0 and done == ["2"],
+               f"-var run 2: exit code {result.returncode}, finished runs {done}")
+        problems.extend(compare(os.path.join(straight, "runs", "2"),
+                                os.path.join(single, "runs", "2"), 16, "run 2 alone")[0])
 
         before, killed = kill_when_restarted(args, interrupted)
         print(f"killed the sweep with runs {before} finished and {killed} between their first "
