@@ -6,6 +6,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <tuple>
+#include <vector>
 
 using ::testing::HasSubstr;
 
@@ -17,6 +19,13 @@ std::string shipped_sets()
 {
   const char *dir = getenv("MESOPHYLL_EXAMPLES");
   return std::string(dir ? dir : "examples") + "/../potentials/arabidopsis.mesophyll";
+}
+
+std::string figure_sets(int figure)
+{
+  const char *dir = getenv("MESOPHYLL_EXAMPLES");
+  return std::string(dir ? dir : "examples") + "/../potentials/fig" + std::to_string(figure) +
+      ".mesophyll";
 }
 
 std::string sets_file(const std::string &name, const std::string &units, const std::string &body)
@@ -72,6 +81,46 @@ TEST(Parameters, EachSensitivitySetChangesOneThingOfTheDefault)
         if (change.first == name) expected = change.second;
       EXPECT_EQ(s.string_variable(name), expected) << set.first << ": " << name;
     }
+  }
+}
+
+// potentials/fig4-6.mesophyll: every set has the captions' common values (theta0_min -3 pi/20,
+// c_L 0.5, c_B 4, Table 1's stiffnesses) and its figure's fixed ones; the highlighted points
+// of Figs 4 and 5 change only the two grid parameters
+TEST(Parameters, FigureSetsAreTheCaptions)
+{
+  using Values = std::vector<std::pair<std::string, double>>;
+  const Values common = {{"eps_a", 1.0}, {"eps_l", 1.0}, {"eps_c", 1.0},
+                         {"c_L", 0.5},   {"c_B", 4.0},   {"theta0_min", -3 * PI / 20}};
+  const std::vector<std::tuple<int, std::string, Values>> sets = {
+      {4, "base", {{"eps_b", 0.4}, {"beta", 100}, {"P0", 1e-6}, {"lambda", 5}, {"delta_a", 0.5}}},
+      {4, "lambda1.5_da0.1", {{"eps_b", 0.4}, {"beta", 100}, {"P0", 1e-6}, {"lambda", 1.5},
+                              {"delta_a", 0.1}}},
+      {4, "lambda2_da0.002", {{"eps_b", 0.4}, {"beta", 100}, {"P0", 1e-6}, {"lambda", 2},
+                              {"delta_a", 0.002}}},
+      {4, "lambda5_da0.01", {{"eps_b", 0.4}, {"beta", 100}, {"P0", 1e-6}, {"lambda", 5},
+                             {"delta_a", 0.01}}},
+      {4, "lambda5_da0.5", {{"eps_b", 0.4}, {"beta", 100}, {"P0", 1e-6}, {"lambda", 5},
+                            {"delta_a", 0.5}}},
+      {5, "base", {{"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-7}, {"beta", 100}, {"eps_b", 0.4}}},
+      {5, "beta70_epsb0.1", {{"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-7}, {"beta", 70},
+                             {"eps_b", 0.1}}},
+      {5, "beta30_epsb0.01", {{"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-7}, {"beta", 30},
+                              {"eps_b", 0.01}}},
+      {5, "beta300_epsb0.03", {{"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-7}, {"beta", 300},
+                               {"eps_b", 0.03}}},
+      {5, "beta200_epsb0.6", {{"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-7}, {"beta", 200},
+                              {"eps_b", 0.6}}},
+      {6, "base", {{"eps_b", 0.4}, {"beta", 100}, {"delta_a", 0.5}, {"lambda", 5}, {"P0", 1e-3}}}};
+  for (const auto &[figure, name, values] : sets) {
+    LammpsSession s;
+    s.run("units lj\nmesophyll_parameters " + figure_sets(figure) + " " + name);
+    for (const auto &list : {common, values})
+      for (const auto &[variable, value] : list)
+        EXPECT_DOUBLE_EQ(std::stod(s.string_variable(variable.c_str())), value)
+            << "fig" << figure << " " << name << ": " << variable;
+    EXPECT_EQ(s.string_variable("rules"), "code") << figure << " " << name;
+    EXPECT_EQ(s.string_variable("z"), "bonds") << figure << " " << name;
   }
 }
 

@@ -328,10 +328,13 @@ def failure_section(runs):
     stalled = [n for n, r in failed.items() if "max iterations" in failure_kinds(r)]
     if tangled:
         lines += ["", "Rings that cross themselves (" + ", ".join(tangled) + "): lobes of one cell "
-                  "fold through each other; the rings have no self-repulsion by default "
-                  "(`pair_style dpoly/contact self yes` adds it), so the steps after the first "
-                  "such minimum describe tangled cells, and the directions above that rest on "
-                  "these sets carry that caveat."]
+                  "fold through each other. Self-repulsion is on (`pair_style dpoly/contact`'s "
+                  "default, `self yes`, which in.mesophyll keeps), but it acts between vertex "
+                  "disks only: these runs insert no vertices, their void segments grow to "
+                  "several vertex diameters, and a lobe can pass through the gap between the "
+                  "disks of a long segment. The steps after the first such minimum describe "
+                  "tangled cells, and the directions above that rest on these sets carry that "
+                  "caveat."]
     if stalled:
         lines += ["", "Minimizations that stopped at the iteration limit (" + ", ".join(stalled) +
                   "): where abs(P/P0 - 1) stays below 1e-6 only the force tolerance was out of "
