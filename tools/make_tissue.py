@@ -202,7 +202,7 @@ def relax(args, rings, output):
     """Run in.relax_tissue on the rings; print its progress lines; return the summary line."""
     variables = {"rings": os.path.abspath(rings), "out": os.path.abspath(output),
                  "P_jam": repr(args.pressure), "ftol": repr(args.ftol),
-                 "P_pack": repr(args.pack_pressure), "pack_iterations": str(args.pack_iterations)}
+                 "P_pack": repr(args.pack_pressure), "pack_rate": repr(args.pack_rate)}
     command = [args.lmp, "-in", RELAX_INPUT, "-echo", "none",
                "-log", os.path.abspath(args.log) if args.log else "none"]
     for name, value in variables.items():
@@ -247,8 +247,8 @@ def check_arguments(p, args):
         p.error(f"--start-phi must lie in [0.05, 0.95], got {args.start_phi}")
     if not (args.pack_pressure > 0.0 and math.isfinite(args.pack_pressure)):
         p.error(f"--pack-pressure must be positive, got {args.pack_pressure}")
-    if args.pack_iterations < 1:
-        p.error(f"--pack-iterations must be >= 1, got {args.pack_iterations}")
+    if not 0.0 < args.pack_rate < 1.0:
+        p.error(f"--pack-rate must lie in (0, 1), got {args.pack_rate}")
     if args.lloyd < 0:
         p.error(f"--lloyd must be >= 0, got {args.lloyd}")
     if args.seed < 0:
@@ -292,8 +292,9 @@ def main():
                    help="force tolerance of the minimizations (default 1e-10)")
     p.add_argument("--pack-pressure", type=float, default=3.0e-4,
                    help="pressure of the packing stage, bending off (default 3e-4)")
-    p.add_argument("--pack-iterations", type=int, default=50000,
-                   help="FIRE iterations of the packing stage (default 50000)")
+    p.add_argument("--pack-rate", type=float, default=3.0e-3,
+                   help="the packing ends when 5000 FIRE iterations compact the box area by less "
+                        "than this fraction (default 3e-3)")
     p.add_argument("--log", default=None, help="LAMMPS log file (default none)")
     p.add_argument("--verbose", action="store_true", help="print all of LAMMPS's output")
     args = p.parse_args()
