@@ -42,7 +42,8 @@ MEASURES = ["phi_patch", "calA", "z", "bonds_per_cell", "P"]
 FIELDS = ["method", "cells", "seed", "cpu_s", "wall_s", "phi", "phi_patch", "calA", "z",
           "bonds_per_cell", "P"]
 MEASURE_INPUT = """compute tissue all dpoly/tissue
-thermo_style custom step press c_tissue[1] c_tissue[2] c_tissue[3] c_tissue[4] c_tissue[5] c_tissue[6]
+thermo_style custom step press c_tissue[1] c_tissue[2] c_tissue[3] c_tissue[4] &
+             c_tissue[5] c_tissue[6]
 thermo_modify norm no format float %.12g
 run 0 post no
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""tools/make_tissue.py and examples/tissue/in.relax_tissue make a confluent, bonded tissue at P_jam.
+"""tools/make_tissue.py and in.relax_tissue make a confluent, bonded tissue at P_jam.
 
     check_make_tissue.py --lmp BUILD/lmp [--np N] [--mpirun CMD] [--numproc-flag F] ...
 
@@ -86,7 +86,8 @@ def check_seeding(work):
     check(len(rings) == CELLS and all(len(r) == N for r in rings.values()),
           f"{CELLS} rings of {N} vertices")
     check(all(0.98 < a <= 1.0 + 1e-12 for a in areas),
-          f"rings counter-clockwise with area a0 up to the chords: {min(areas):.5f}..{max(areas):.5f}")
+          f"rings counter-clockwise with area a0 up to the chords: "
+          f"{min(areas):.5f}..{max(areas):.5f}")
     closest = math.inf
     cells = list(rings.items())
     for k, (m, ring) in enumerate(cells):
@@ -182,7 +183,8 @@ def check_arguments(work):
         argv = [sys.executable, TOOL, os.path.join(work, "bad.data"), "--cells", "8"] + extra
         r = subprocess.run(argv, capture_output=True, text=True)
         check(r.returncode == 2 and what in r.stderr and value in r.stderr,
-              f"{' '.join(extra)} refused (exit {r.returncode}): {r.stderr.strip().splitlines()[-1]}")
+              f"{' '.join(extra)} refused (exit {r.returncode}): "
+              f"{r.stderr.strip().splitlines()[-1]}")
 
 
 def main():
