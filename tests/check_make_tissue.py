@@ -7,7 +7,8 @@
    ring counter-clockwise with the area of its cell up to the chords of 32 vertices (within 2%
    below a0); no vertex of one ring within a contact distance s of another ring's (minimum
    image); the per-vertex state of the package's initial cells (sigma = l0 = p0/n,
-   theta0 = 2 pi/n, a0 = 1).
+   theta0 = 2 pi/n, a0 = 1); with --polydispersity the same per cell, sizes of mean sqrt(a0) 1,
+   rings no larger than their a0 and apart by their own contact distances.
 2. Relaxation (in.relax_tissue on --np ranks) of 8 seeded cells: the data file reads back, and
    measured by a `run 0` with the main example's styles it is at P_jam (abs(P/P_jam - 1) below
    1e-4), confluent (phi_patch above 0.85), every cell bonded to another (adhesive bonds on every
@@ -100,6 +101,43 @@ def check_seeding(work):
     check(closest >= l0 * (1 - 1e-9),
           f"no vertex pair of different rings closer than s = {l0:.6f}: closest {closest:.6f}")
     return first
+
+
+def check_polydisperse(work):
+    """--polydispersity: sizes drawn with mean sqrt(a0) = 1, each ring in its cell's own state,
+    no larger than its a0, and apart from its neighbours by their mean vertex diameter."""
+    path = os.path.join(work, "poly.data")
+    subprocess.run([sys.executable, TOOL, path, "--cells", str(CELLS), "--seed", "5",
+                    "--polydispersity", "0.3", "--rings-only"], check=True, capture_output=True)
+    data = DataFile(path)
+    rings, lx, ly = rings_of(data)
+    state = {int(w[0]): [float(v) for v in w[1:5]] for w in data.sections["Vertices"]}
+    regular = N * math.tan(math.pi / N) / math.pi
+    a0, sigma, ok_state, ok_area = {}, {}, True, True
+    for m, ring in rings.items():
+        a0[m] = state[ring[0][0]][3]
+        sigma[m] = math.sqrt(4.0 * math.pi * a0[m] * 1.14 * regular) / N
+        ok_state &= all(abs(state[i][0] - sigma[m]) < 1e-12 and abs(state[i][1] - sigma[m]) < 1e-12
+                        and state[i][3] == a0[m] for i, _, _ in ring)
+        xy = [(x, y) for _, x, y in ring]
+        area = 0.5 * sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(xy, xy[1:] + xy[:1]))
+        ok_area &= 0.0 < area <= a0[m] * (1 + 1e-12)
+    sizes = [math.sqrt(a) for a in a0.values()]
+    check(abs(sum(sizes) / len(sizes) - 1) < 1e-12 and max(sizes) / min(sizes) > 1.2,
+          f"polydisperse: mean sqrt(a0) 1, sqrt(a0) {min(sizes):.3f}..{max(sizes):.3f}")
+    check(ok_state and ok_area, "polydisperse: each ring in its cell's state, area in (0, a0]")
+    closest = math.inf
+    cells = list(rings.items())
+    for k, (m, ring) in enumerate(cells):
+        for m2, ring2 in cells[k + 1:]:
+            s = 0.5 * (sigma[m] + sigma[m2])
+            for _, x, y in ring:
+                for _, x2, y2 in ring2:
+                    dx = (x2 - x) - lx * round((x2 - x) / lx)
+                    dy = (y2 - y) - ly * round((y2 - y) / ly)
+                    closest = min(closest, math.hypot(dx, dy) / s)
+    check(closest >= 1 - 1e-9, f"polydisperse: no vertex pair closer than its s: closest "
+                               f"{closest:.4f} s")
 
 
 def relax(args, work, rings, name, np):
@@ -195,6 +233,7 @@ def main():
     args.lmp = os.path.abspath(args.lmp)
     with tempfile.TemporaryDirectory() as work:
         rings = check_seeding(work)
+        check_polydisperse(work)
         check_relaxation(args, work, rings)
         if args.np == 1:
             check_arguments(work)

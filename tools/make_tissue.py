@@ -25,7 +25,8 @@ cells). This tool starts next to contact and packs in one enthalpy minimization:
    cell may fill its region with less than its a0 and start compressed.
 3. Relaxation (examples/tissue/in.relax_tissue, unless --rings-only): fire/nph with fix
    box/relax iso at the packing pressure --pack-pressure, bending off, until 5000 FIRE
-   iterations compact the box by less than --pack-rate of its area; then the initial state as
+   iterations compact the box by less than --pack-rate of its area, the cells touching (mean
+   z >= 3); then the initial state as
    in.make_tissue defines it: every overlapping vertex pair of different cells bonded
    (adhere_cells), theta0 = the current angles, relaxation with bending on at the target
    pressure --pressure (P_jam) to the force tolerance (fix dpoly/check stops a relaxation that
