@@ -9,7 +9,8 @@
    image); the per-vertex state of the package's initial cells (sigma = l0 = p0/n,
    theta0 = 2 pi/n, a0 = 1); with --polydispersity the same per cell, sizes of mean sqrt(a0) 1,
    rings no larger than their a0 and apart by their own contact distances.
-2. Relaxation (in.relax_tissue on --np ranks) of 8 seeded cells: the data file reads back, and
+2. Relaxation of 8 seeded cells (on 1 rank the whole tool, on more in.relax_tissue on --np
+   ranks): the data file reads back, and
    measured by a `run 0` with the main example's styles it is at P_jam (abs(P/P_jam - 1) below
    1e-4), confluent (phi_patch above 0.85), every cell bonded to another (adhesive bonds on every
    cell, to other cells), and equal to what the run printed (bonds, phi_patch). The rings are the
@@ -141,14 +142,21 @@ def check_polydisperse(work):
 
 
 def relax(args, work, rings, name, np):
+    """On one rank the whole tool from the seed (its LAMMPS driver included; it draws the same
+    rings as check_seeding's); on more, in.relax_tissue on those rings through the launcher."""
     out = os.path.join(work, name)
-    args_np = argparse.Namespace(**dict(vars(args), np=np))
-    command, env = launch(args_np, ["-in", RELAX, "-var", "rings", rings, "-var", "out", out,
-                                    "-var", "pack_rate", "1e-2",
-                                    "-log", "none", "-echo", "none"])
+    if np == 1:
+        command = [sys.executable, TOOL, out, "--cells", str(CELLS), "--seed", "5",
+                   "--pack-rate", "1e-2", "--lmp", args.lmp]
+        env = dict(os.environ)
+    else:
+        args_np = argparse.Namespace(**dict(vars(args), np=np))
+        command, env = launch(args_np, ["-in", RELAX, "-var", "rings", rings, "-var", "out", out,
+                                        "-var", "pack_rate", "1e-2",
+                                        "-log", "none", "-echo", "none"])
     result = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
     if result.returncode != 0:
-        sys.exit(f"check_make_tissue: in.relax_tissue failed on {np} ranks:\n"
+        sys.exit(f"check_make_tissue: the relaxation failed on {np} ranks:\n"
                  f"{result.stdout[-3000:]}{result.stderr[-2000:]}")
     line = next(x for x in result.stdout.splitlines() if x.startswith("make_tissue: tissue:"))
     printed = dict(zip(re.findall(r"(phi_patch|bonds) ", line),
