@@ -445,7 +445,9 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick, variables=()
              "Spread = min..max over seeds (no seed of one code corresponds to one of the "
              "other: their random streams differ). growth steps = growth steps done before "
              "the minimum; after 0 growth steps the published code's state is its fixed-box relaxation of "
-             "the input (its frame 0), the package's its first minimum at P0.", "", "At matched phi_patch (linear interpolation at the first "
+             "the input (its frame 0), the package's its first minimum at P0. Which settings of "
+             "the package close the gap after the first growth step, with a table of the "
+             "variants tried: validation/published/README.md (growth_step/).", "", "At matched phi_patch (linear interpolation at the first "
              "crossing):", ""] + head
     for phi in PUB_PHI:
         for key in ("calA", "z"):
