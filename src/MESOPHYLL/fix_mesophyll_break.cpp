@@ -24,8 +24,8 @@ using DPoly::AdhesiveBond;
 
 FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, BREAK, 5), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1),
-    break_step(0), start(1), broken_total(0), broken_threshold(0), broken_stochastic(0), bonds_left(0),
-    local_rows(nullptr), adhesion(nullptr)
+    break_step(0), start(1), broken_total(0), broken_threshold(0), broken_stochastic(0),
+    bonds_left(0), local_rows(nullptr), adhesion(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mesophyll/break", error);
   seed = utils::inumeric(FLERR, arg[3], false, lmp);
