@@ -44,7 +44,7 @@ TEST(Parameters, DefaultSetIsTableOne)
       {"theta0_min", -PI / 10}};
   for (const auto &p : table1)
     EXPECT_DOUBLE_EQ(std::stod(s.string_variable(p.first)), p.second) << p.first;
-  EXPECT_EQ(s.string_variable("rules"), "published");
+  EXPECT_EQ(s.string_variable("rules"), "code");
   EXPECT_EQ(s.string_variable("z"), "bonds");
 }
 

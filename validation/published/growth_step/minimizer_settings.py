@@ -29,7 +29,7 @@ from regression import tissue_commands    # noqa: E402
 
 P0 = 1.0e-3
 DEFAULT = {"timestep": "0.01", "tmax": "5", "tmin": "0.02", "alpha0": "0.25", "boxmass": "1",
-           "steer": "mass", "vmax": "1.0e-3"}
+           "steer": "force", "vmax": "1.0e-3"}
 # The published mesoEnthalpyFIRE after this growth step: dt = 0.01 x the smallest of 1, min l0
 # and min radius (0.0725 here), growing to 20 dt, shrinking to 0.1 dt, alpha0 0.2; the box area V
 # moves with mass 1, i.e. the box length L with mass 4V = 4 x 34.5 = 138, which is boxmass
@@ -37,22 +37,23 @@ DEFAULT = {"timestep": "0.01", "tmax": "5", "tmin": "0.02", "alpha0": "0.25", "b
 # steering is mass-weighted (steer mass).
 PUBLISHED_LIKE = {"timestep": "7.25e-4", "tmax": "20", "tmin": "0.1", "alpha0": "0.2",
                   "boxmass": "1.6", "steer": "mass", "vmax": "1.0"}
-FORCE = {"steer": "force"}    # in.mesophyll's steering until 2 December 2026
+MASS = {"steer": "mass"}    # -var steer mass of in.mesophyll
 VARIANTS = [
-    ("in.mesophyll (steer mass)", {}),
-    ("steer mass, boxmass 1.6", {"boxmass": "1.6"}),
-    ("steer mass, vmax 1e-2", {"vmax": "1.0e-2"}),
+    ("in.mesophyll (steer force)", {}),
+    ("steer force, boxmass 0.1", {"boxmass": "0.1"}),
+    ("steer force, boxmass 10", {"boxmass": "10"}),
+    ("steer force, boxmass 100", {"boxmass": "100"}),
+    ("steer force, vmax 1e-4", {"vmax": "1.0e-4"}),
+    ("steer force, vmax 1e-2", {"vmax": "1.0e-2"}),
+    ("steer force, timestep 0.001", {"timestep": "0.001"}),
+    ("steer force, timestep 0.001 tmax 20", {"timestep": "0.001", "tmax": "20"}),
+    ("steer force, as published otherwise", dict(PUBLISHED_LIKE, steer="force")),
+    ("steer mass", MASS),
+    ("steer mass, boxmass 1.6", dict(MASS, boxmass="1.6")),
+    ("steer mass, vmax 1e-2", dict(MASS, vmax="1.0e-2")),
     ("steer mass, as published", PUBLISHED_LIKE),
-    ("steer force", FORCE),
-    ("steer force, boxmass 0.1", dict(FORCE, boxmass="0.1")),
-    ("steer force, boxmass 10", dict(FORCE, boxmass="10")),
-    ("steer force, boxmass 100", dict(FORCE, boxmass="100")),
-    ("steer force, vmax 1e-4", dict(FORCE, vmax="1.0e-4")),
-    ("steer force, vmax 1e-2", dict(FORCE, vmax="1.0e-2")),
-    ("steer force, timestep 0.001", dict(FORCE, timestep="0.001")),
-    ("steer force, timestep 0.001 tmax 20", dict(FORCE, timestep="0.001", tmax="20")),
-    ("steer force, as published otherwise", dict(PUBLISHED_LIKE, **FORCE)),
 ]
+
 GROW = """fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4 &
     theta0_min -0.3141592653589793 rules published
 # at frame 0's own pressure (the atoms hardly move); fix dpoly/cells grows the cells after it
