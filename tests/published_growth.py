@@ -15,7 +15,7 @@ tells the two rule sets apart. Then the minimization after that growth step: min
 with min_modify steer mass (FIRE steering in mass-weighted coordinates, as the published
 NPH-FIRE) must end in the published code's own minimum (frame 1): box area and enthalpy
 U + P0 A to 1e-6 relative (measured: 2e-7, as close as the grown states are); with steer force
-(the earlier steering) in another one (measured: box area 2.2% larger), so that the test tells
+(in.mesophyll's steering) in another one (measured: box area 2.2% larger), so that the test tells
 the steerings apart. Standard library only.
 """
 import argparse
