@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""fix mesophyll/grow rules published makes the published code's growth step, value for value.
+"""The published code's first growth step: fix mesophyll/grow rules published, fire/nph steer mass.
 
     published_growth.py --lmp BUILD/lmp --frames validation/published/growth_step [--np N] ...
 
@@ -11,7 +11,12 @@ dpoly/cells runs fix mesophyll/grow once, and compares the grown sigma, l0, thet
 frame 1's, vertex by vertex, to 1e-5 (measured: 3e-7). With rules code (the
 package's default: run lengths of half end segments, the drift bounded at theta0_min, smoothing
 from the drifted values) the same comparison must fail by more than 1e-3, so that the test
-tells the two rule sets apart. Standard library only.
+tells the two rule sets apart. Then the minimization after that growth step: min_style fire/nph
+with min_modify steer mass (FIRE steering in mass-weighted coordinates, as the published
+NPH-FIRE) must end in the published code's own minimum (frame 1): box area and enthalpy
+U + P0 A to 1e-6 relative (measured: 2e-7, as close as the grown states are); with steer force
+(in.mesophyll's steering) in another one (measured: box area 2.2% larger), so that the test tells
+the steerings apart. Standard library only.
 """
 import argparse
 import os
@@ -24,8 +29,11 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
 from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
 from lammps_data import DataFile    # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "validation", "published", "growth_step"))
+from minimizer_settings import package_minimum, published_minimum    # noqa: E402
 
 TOLERANCE = 1e-5
+MINIMUM_TOLERANCE = 1e-6
 GROW = """fix grow all mesophyll/grow delta_a 0.5 lambda 5 c_L 0.5 c_B 4 &
     theta0_min -0.3141592653589793 rules {rules}
 # relaxed at the frame's own pressure: the atoms hardly move, but they migrate and are sorted,
@@ -67,6 +75,21 @@ def largest_difference(args, rules, work):
     return max(worst.values())
 
 
+def minimum_difference(args, steer, work):
+    """Largest relative difference of box area and enthalpy between the published code's
+    minimum after the growth step and the package's with min_modify steer 'steer'."""
+    frames = os.path.abspath(args.frames)
+    launcher = lambda arguments: launch(args, arguments)    # noqa: E731
+    # numbers: phi_patch, calA, z, box area, enthalpy, iterations
+    published = published_minimum(args.lmp, frames, work, launcher)
+    package = package_minimum(args.lmp, frames, {"steer": steer}, work, launcher)
+    worst = max(abs(package[k] / published[k] - 1.0) for k in (3, 4))
+    print(f"steer {steer}: box area {package[3]:.9g} (published {published[3]:.9g}), enthalpy "
+          f"{package[4]:.9g} ({published[4]:.9g}), {int(package[5])} iterations: largest "
+          f"relative difference {worst:.2e}")
+    return worst
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--lmp", required=True)
@@ -77,12 +100,21 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         published = largest_difference(args, "published", work)
         code = largest_difference(args, "code", work)
+        steer_mass = minimum_difference(args, "mass", work)
+        steer_force = minimum_difference(args, "force", work)
     failed = False
     if published > TOLERANCE:
         print(f"FAIL: rules published differs from the published code by {published:.2e}")
         failed = True
     if code <= 1e-3:
         print(f"FAIL: rules code is as close as {code:.2e}: the test cannot tell the rules apart")
+        failed = True
+    if steer_mass > MINIMUM_TOLERANCE:
+        print(f"FAIL: steer mass ends {steer_mass:.2e} away from the published code's minimum")
+        failed = True
+    if steer_force <= 1e-3:
+        print(f"FAIL: steer force ends as close as {steer_force:.2e}: the test cannot tell the "
+              "steerings apart")
         failed = True
     sys.exit(1 if failed else 0)
 

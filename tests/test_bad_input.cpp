@@ -572,6 +572,9 @@ std::vector<Case> cases()
   keyword_case("GrowRules", "fix mesophyll/grow rules authors",
                "fix grow all mesophyll/grow box fixed rules authors\n",
                "rules must be 'code', 'paper' or 'published', got 'authors'");
+  keyword_case("FireNphSteer", "min_modify steer speed (fire/nph)",
+               "min_style fire/nph\nmin_modify steer speed\n",
+               "min_modify steer must be force or mass, got speed");
   keyword_case("GrowBox", "fix mesophyll/grow box free", "fix grow all mesophyll/grow box free\n",
                "box must be 'relax' or 'fixed', got 'free'");
   keyword_case("GrowWithoutBoxRelax", "fix mesophyll/grow without fix box/relax",

@@ -180,6 +180,27 @@ TEST(Contacts, BondBreaksAtThresholdStretch)
   EXPECT_EQ(above->thermo("ebond"), 0.0) << "the broken bond must be gone";
 }
 
+// Passes before 'start' count (the random stream's step) but break nothing, also after a restart.
+TEST(Contacts, BreakStartSkipsTheFirstPasses)
+{
+  const double s = 0.5, r_star = (1.0 + std::sqrt(2.0)) * s;
+  const std::string options = "4242 beta 1.0e9 runs yes start 2";
+  auto held = two_cells(1.001 * r_star, 1, "bonds", options);
+  EXPECT_EQ(held->thermo("f_break[1]"), 0.0) << "the first pass breaks nothing";
+  EXPECT_EQ(held->thermo("f_break[3]"), 1.0);
+  EXPECT_EQ(held->thermo("f_break[5]"), 1.0) << "but counts";
+  const std::string restart = scratch("break_start.restart");
+  held->run("write_restart " + restart);
+  held->run("run 0 post no");
+  EXPECT_EQ(held->thermo("f_break[1]"), 1.0) << "the second pass breaks the bond beyond r*";
+
+  LammpsSession resumed;
+  resumed.run(resume_commands(restart) + "fix break all mesophyll/break " + options +
+              "\nthermo_style custom step pe\nrun 0 post no");
+  EXPECT_EQ(resumed.thermo("f_break[5]"), 2.0);
+  EXPECT_EQ(resumed.thermo("f_break[1]"), 1.0) << "a resumed run knows the first pass is done";
+}
+
 // ---------------------------------------------------------------------------------------
 // Breaking statistics and rules
 

@@ -2,7 +2,7 @@
 """Validate the package against the paper: run the development, write doc/validation.md and PNGs.
 
     tools/validate.py [--lmp build/lmp] [--jobs 2] [--out doc] [--cache DIR] [--quick]
-                      [--published [--published-dir validation/published]]
+                      [--published [--published-dir validation/published] [--var NAME VALUE]]
 
 Runs examples/mesophyll/in.mesophyll:
   A. the default run (N = 64) with three seeds of bond breaking, with vertex insertion (the
@@ -13,7 +13,9 @@ Runs examples/mesophyll/in.mesophyll:
      (N = 64, without insertion).
   D. (--published: only this part) the comparison with the published code: in.mesophyll with
      N = 16 for as many seeds as validation/published/ holds CSVs of the published code with
-     insertion, to phi_patch 0.45, against those CSVs (see validation/published/README.md).
+     insertion, to phi_patch 0.45, against those CSVs (see validation/published/README.md);
+     --var NAME VALUE (repeated) runs a variant of the example's default (with --out elsewhere,
+     so that doc/validation.md keeps the default's comparison).
 Then states, claim by claim of the paper's Fig 2 (listed in the Howto's "The main run"), whether
 it holds, with the numbers, and draws the PNGs next to the text. --quick runs a few steps only (to try the script); --cache keeps each
 run's record and log in DIR and reuses them. The runs take about an hour on 2 cores. Needs
@@ -47,8 +49,10 @@ KINDS = [("cross themselves", "rings cross themselves"),
          ("|P - P0|/P0 =", "P off P0 by more than 1e-6")]
 
 
-def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache, phi_stop="0.3"):
-    """Run one development (or take it from the cache); return its growth record."""
+def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache, phi_stop="0.3",
+        extra=None):
+    """Run one development (or take it from the cache); return its growth record. extra: more
+    variables of in.mesophyll, {name: value}."""
     work = os.path.join(cache or workroot, name)
     if cache and os.path.exists(os.path.join(work, f"growth.N{cells}.txt")):
         result = mesophyll_run.read(work, returncode=0)
@@ -57,7 +61,7 @@ def run(lmp, name, cells, pset, seed, steps, refine, workroot, cache, phi_stop="
             lmp, "in.mesophyll", work,
             {"N": cells, "set": pset, "seed": seed, "steps": steps, "phi_stop": phi_stop,
              "ftol": FTOL.get(pset, 1e-10), "maxiter": MAXITER.get(pset, 200000),
-             "refine": refine}, check=False)
+             "refine": refine, **(extra or {})}, check=False)
     record = {n: np.array(v) for n, v in result.growth[cells].items()}
     record["vertices"] = result.loops[-1].atoms if result.loops else 0
     record["failures"] = [(c.minimum, c.problems) for c in result.failures]
@@ -112,7 +116,12 @@ def main():
     p.add_argument("--published", action="store_true",
                    help="only the comparison with the published code (part D)")
     p.add_argument("--published-dir", default=os.path.join(ROOT, "validation", "published"))
+    p.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
+                   help="with --published: pass this variable to in.mesophyll as well (e.g. "
+                        "--var rules published), to compare a variant of the default")
     args = p.parse_args()
+    if args.var and not args.published:
+        p.error("--var is only for --published (the other parts run their own settings)")
     lmp = os.path.abspath(args.lmp)
     if args.published:
         return published_comparison(lmp, args)
@@ -395,27 +404,31 @@ def published_comparison(lmp, args):
     pkg = {}
     with tempfile.TemporaryDirectory() as workroot:
         with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            futures = [pool.submit(run, lmp, f"published_pkg_N16_{s}", 16, "default", s, steps,
-                                   "published",
-                                   workroot, args.cache, PUB_STOP) for s in seeds]
+            tag = "".join(f"_{n}{v}" for n, v in args.var).replace("/", "")
+            futures = [pool.submit(run, lmp, f"published_pkg_N16{tag}_{s}", 16, "default", s,
+                                   steps, "published", workroot, args.cache, PUB_STOP,
+                                   dict(args.var)) for s in seeds]
             for f in concurrent.futures.as_completed(futures):
                 name, r = f.result()
                 r["growth_steps"] = r["step"] - 1    # row k of in.mesophyll: k - 1 growths
                 pkg[name] = r
                 print(f"{name}: {len(r['step'])} minima, phi_patch {r['phi_patch'][-1]:.3f}",
                       flush=True)
-    pkg = [pkg[f"published_pkg_N16_{s}"] for s in seeds]
+    pkg = [pkg[f"published_pkg_N16{tag}_{s}"] for s in seeds]
     pubs = list(pub.values())
-    write_published_report(pkg, pubs, seeds, sorted(pub), args.out, args.quick)
+    write_published_report(pkg, pubs, seeds, sorted(pub), args.out, args.quick, args.var)
 
 
-def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
+def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick, variables=()):
     os.makedirs(out, exist_ok=True)
 
-    def row(label, pkg_values, pub_values, fmt):
+    tally = collections.defaultdict(collections.Counter)    # {table: {yes/no/n/a: rows}}
+
+    def row(label, pkg_values, pub_values, fmt, table):
         m, lo, hi = spread(pkg_values)
         pm, plo, phi_ = spread(pub_values)
         inside = "n/a" if np.isnan(m) or np.isnan(pm) else ("yes" if plo <= m <= phi_ else "no")
+        tally[table][inside] += 1
         return (f"| {label} | {fmt(pm)} ({fmt(plo)}..{fmt(phi_)}) | {fmt(m)} ({fmt(lo)}..{fmt(hi)})"
                 f" | {inside} |")
 
@@ -428,20 +441,23 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
              f"Published code: jacktreado/dpm readInMesoNetwork2D, {len(pubs)} seeds "
              f"({', '.join(pub_seeds)}), with its vertex insertion, from the CSVs of "
              "validation/published (README.md there says how they were made). Package: "
-             f"examples/mesophyll/in.mesophyll -var N 16, {len(seeds)} seeds "
+             "examples/mesophyll/in.mesophyll -var N 16" +
+             "".join(f" -var {n} {v}" for n, v in variables) + f", {len(seeds)} seeds "
              f"({', '.join(map(str, seeds))}), as it is in this checkout, stopped at phi_patch "
              f"{PUB_STOP}. Both from tissue_N16.data, both measured by compute dpoly/tissue. "
              "Spread = min..max over seeds (no seed of one code corresponds to one of the "
              "other: their random streams differ). growth steps = growth steps done before "
              "the minimum; after 0 growth steps the published code's state is its fixed-box relaxation of "
-             "the input (its frame 0), the package's its first minimum at P0.", "", "At matched phi_patch (linear interpolation at the first "
+             "the input (its frame 0), the package's its first minimum at P0. Which settings of "
+             "the package close the gap after the first growth step, with a table of the "
+             "variants tried: validation/published/README.md (growth_step/).", "", "At matched phi_patch (linear interpolation at the first "
              "crossing):", ""] + head
     for phi in PUB_PHI:
         for key in ("calA", "z"):
             lines.append(row(f"{key} at phi_patch {phi}", [at_phi(r, key, phi) for r in pkg],
-                             [at_phi(r, key, phi) for r in pubs], f3))
+                             [at_phi(r, key, phi) for r in pubs], f3, "matched"))
     lines.append(row("growth steps to phi_patch <= 0.5", [steps_to(r, 0.5) for r in pkg],
-                     [steps_to(r, 0.5) for r in pubs], f1))
+                     [steps_to(r, 0.5) for r in pubs], f1, "steps"))
     last = int(max(max(r["growth_steps"]) for r in pubs))
     lines += ["", "Per growth step (runs that have the step):", ""] + head
     for k in range(last + 1):
@@ -450,8 +466,16 @@ def write_published_report(pkg, pubs, seeds, pub_seeds, out, quick):
                 hit = np.nonzero(r["growth_steps"] == k)[0]
                 return r[key][hit[0]] if len(hit) else np.nan
             lines.append(row(f"{key} after {k} growth steps", [at(r) for r in pkg],
-                             [at(r) for r in pubs], f3))
-    lines += ["", "![calA and z against phi_patch, both codes](published_comparison.png)"]
+                             [at(r) for r in pubs], f3, "per step"))
+
+    def inside(table):
+        return f"{tally[table]['yes']} of {tally[table]['yes'] + tally[table]['no']}"
+    summary_line = (f"Package mean inside the published min..max: calA and z at matched phi_patch "
+                    f"{inside('matched')}, growth steps to phi_patch <= 0.5 {inside('steps')}, "
+                    f"phi_patch, calA and z per growth step {inside('per step')}.")
+    lines += ["", summary_line,
+              "", "![calA and z against phi_patch, both codes](published_comparison.png)"]
+    print(summary_line)
 
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
     for ax, key, label in [(axes[0], "calA", r"mean $\mathcal{A}$"),

@@ -24,8 +24,8 @@ using DPoly::AdhesiveBond;
 
 FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, BREAK, 5), beta(100.0), threshold(1.0 + sqrt(2.0)), edges_only(1),
-    break_step(0), broken_total(0), broken_threshold(0), broken_stochastic(0), bonds_left(0),
-    local_rows(nullptr), adhesion(nullptr)
+    break_step(0), start(1), broken_total(0), broken_threshold(0), broken_stochastic(0),
+    bonds_left(0), local_rows(nullptr), adhesion(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mesophyll/break", error);
   seed = utils::inumeric(FLERR, arg[3], false, lmp);
@@ -40,9 +40,12 @@ FixMesophyllBreak::FixMesophyllBreak(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR,
                    "Fix mesophyll/break threshold (breaking stretch r*/s) must be > 1, got {}",
                    value);
-    } else if (strcmp(key, "edges") == 0)
+    } else if (strcmp(key, "edges") == 0) {
       edges_only = utils::logical(FLERR, value, false, lmp);
-    else
+    } else if (strcmp(key, "start") == 0) {
+      start = utils::bnumeric(FLERR, value, false, lmp);
+      if (start < 1) error->all(FLERR, "Fix mesophyll/break start must be >= 1, got {}", value);
+    } else
       return false;
     return true;
   });
@@ -123,7 +126,10 @@ int FixMesophyllBreak::act()
 {
   break_step++;
   const std::vector<AdhesiveBond> bonds = adhesion->gather_bonds();
-  const std::vector<Broken> broken = decide(bonds);
+  // passes before 'start' count (the random stream's step) but break nothing: the published
+  // code's first breaking pass follows its first growth step, and a development's first
+  // minimum is the relaxed tissue before it
+  const std::vector<Broken> broken = break_step < start ? std::vector<Broken>() : decide(bonds);
 
   broken_threshold = broken_stochastic = 0;
   for (const auto &k : broken) (k.stochastic ? broken_stochastic : broken_threshold)++;
@@ -139,8 +145,10 @@ int FixMesophyllBreak::act()
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "fix mesophyll/break: step {}: {} bonds broke ({} at threshold, {} "
-                   "stochastic), {} adhesive bonds left\n",
-                   break_step, broken.size(), broken_threshold, broken_stochastic, bonds_left);
+                   "stochastic{}), {} adhesive bonds left\n",
+                   break_step, broken.size(), broken_threshold, broken_stochastic,
+                   break_step < start ? fmt::format("; none before step {}", start) : "",
+                   bonds_left);
   return broken.empty() ? NOTHING : BONDS;
 }
 

@@ -40,6 +40,7 @@ class FixMesophyllBreak : public FixDPolyStage {
   double threshold;     // breaking stretch r*/s; U0 = eps_c/(2 z) (r*/s - 1)^2
   int edges_only;       // stochastic test only at the edges of junctions
   bigint break_step;    // number of breaking steps so far: the random stream's step
+  bigint start;         // the first breaking step that may break bonds
   bigint broken_total;
   int broken_threshold, broken_stochastic;
   bigint bonds_left;

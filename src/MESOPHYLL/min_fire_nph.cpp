@@ -36,8 +36,8 @@ static constexpr double BOX_CHANGE_LIMIT = 4.0;
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
-    Min(lmp), boxmass_scale(1.0), velocity(nullptr), box_length(nullptr), box_mass(nullptr),
-    box_velocity(nullptr), box_step(nullptr)
+    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), velocity(nullptr), box_length(nullptr),
+    box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
 {
   // Min::setup() refuses fix box/relax with damped dynamics because FIRE and quickmin ignore
   // the box; this style moves the box itself, so it declares itself box-aware.
@@ -63,6 +63,16 @@ int MinFireNph::modify_param(int narg, char **arg)
     boxmass_scale = utils::numeric(FLERR, arg[1], false, lmp);
     if (boxmass_scale <= 0.0)
       error->all(FLERR, "min_modify boxmass value {} must be > 0", boxmass_scale);
+    return 2;
+  }
+  if (strcmp(arg[0], "steer") == 0) {
+    if (narg < 2) utils::missing_cmd_args(FLERR, "min_modify steer", error);
+    if (strcmp(arg[1], "force") == 0)
+      steer_by_mass = false;
+    else if (strcmp(arg[1], "mass") == 0)
+      steer_by_mass = true;
+    else
+      error->all(FLERR, "min_modify steer must be force or mass, got {}", arg[1]);
     return 2;
   }
   return 0;
@@ -144,9 +154,10 @@ void MinFireNph::setup_style()
     utils::logmesg(lmp,
                    "  Parameters for fire/nph: dmax {} delaystep {} dtgrow {} dtshrink {} "
                    "alpha0 {} alphashrink {} tmax {} tmin {} halfstepback {} box dof {} "
-                   "boxmass {}\n",
+                   "boxmass {} steer {}\n",
                    dmax, delaystep, dtgrow, dtshrink, alpha0, alphashrink, tmax, tmin,
-                   halfstepback_flag ? "yes" : "no", nextra_global, boxmass_scale);
+                   halfstepback_flag ? "yes" : "no", nextra_global, boxmass_scale,
+                   steer_by_mass ? "mass" : "force");
 }
 
 /* ----------------------------------------------------------------------
@@ -203,24 +214,37 @@ void MinFireNph::zero_velocities()
 
 double MinFireNph::mix_velocities()
 {
+  // steer mass: FIRE in the coordinates sqrt(m) x, in which every degree of freedom has unit
+  // mass (velocity sqrt(m) v, force f/sqrt(m)); the published code's NPH-FIRE steers its box
+  // area, of unit mass, so. steer force: v and f as they are, a heavy box steered like an atom.
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
   double local[2] = {0.0, 0.0};
   for (int i = 0; i < nvec; i++) {
-    local[0] += velocity[i] * velocity[i];
-    local[1] += fvec[i] * fvec[i];
+    const double m = steer_by_mass ? (rmass ? rmass[i / 3] : mass[type[i / 3]]) : 1.0;
+    local[0] += m * velocity[i] * velocity[i];
+    local[1] += fvec[i] * fvec[i] / m;
   }
   double all[2];
   MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_SUM, world);
   for (int k = 0; k < nextra_global; k++) {
     const double fq = fextra[k] / box_length[k];
-    all[0] += box_velocity[k] * box_velocity[k];
-    all[1] += fq * fq;
+    const double m = steer_by_mass ? box_mass[k] : 1.0;
+    all[0] += m * box_velocity[k] * box_velocity[k];
+    all[1] += fq * fq / m;
   }
   if (!(all[1] > 0.0)) return all[1];
   const double keep = 1.0 - alpha;
   const double steer = alpha * sqrt(all[0] / all[1]);
-  for (int i = 0; i < nvec; i++) velocity[i] = keep * velocity[i] + steer * fvec[i];
-  for (int k = 0; k < nextra_global; k++)
-    box_velocity[k] = keep * box_velocity[k] + steer * fextra[k] / box_length[k];
+  for (int i = 0; i < nvec; i++) {
+    const double m = steer_by_mass ? (rmass ? rmass[i / 3] : mass[type[i / 3]]) : 1.0;
+    velocity[i] = keep * velocity[i] + steer * fvec[i] / m;
+  }
+  for (int k = 0; k < nextra_global; k++) {
+    const double m = steer_by_mass ? box_mass[k] : 1.0;
+    box_velocity[k] = keep * box_velocity[k] + steer * fextra[k] / box_length[k] / m;
+  }
   return all[1];
 }
 

@@ -35,6 +35,7 @@ class MinFireNph : public Min {
 
  private:
   double boxmass_scale;    // box mass relative to that of an affine dilation
+  bool steer_by_mass;      // FIRE's steering in mass-weighted coordinates (min_modify steer mass)
 
   double dt, dtmax, dtmin, alpha;
   double last_drift_time;    // time of the last drift, after dmax and vmax shortened it
