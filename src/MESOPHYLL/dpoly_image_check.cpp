@@ -19,13 +19,21 @@ using namespace LAMMPS_NS;
 using namespace DPoly;
 
 AdhesiveBondsImageCheck::AdhesiveBondsImageCheck(LAMMPS *lmp) :
-    Pointers(lmp), reason_given(false), hidden(false)
+    Pointers(lmp), reason_given(false), hidden(false), setup_flag_stale(false)
 {
+}
+
+void AdhesiveBondsImageCheck::init()
+{
+  after_check();
+  setup_flag_stale = update->setupflag != 0;
 }
 
 void AdhesiveBondsImageCheck::before_check()
 {
-  if (!reason_given || hidden || !update->setupflag || !atom->avec->bonds_allow) return;
+  if (!reason_given || hidden || setup_flag_stale || !update->setupflag ||
+      !atom->avec->bonds_allow)
+    return;
   const CellAdhesion *adhesion = find_cell_adhesion(lmp);
   if (!adhesion) return;
   const int ntypes = atom->nbondtypes;

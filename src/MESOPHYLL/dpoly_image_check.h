@@ -36,8 +36,14 @@ namespace DPoly {
     // setup_pre_exchange()) nothing is hidden, as no setup_pre_neighbor() would follow.
     void before_check();
     // Right after it, before the neighbour lists are built: give the adhesive bonds their
-    // types back.
+    // types back. The hub's destructor calls it too.
     void after_check();
+    // From the hub's init(), which LAMMPS calls before every setup and in write_data: an error
+    // thrown inside the window (e.g. non-finite coordinates in Domain::pbc()) and caught by a
+    // library caller leaves the types hidden and LAMMPS's update->setupflag at 1, so write_data's
+    // setup_pre_exchange() would look like a setup's. Give the types back, and hide nothing
+    // until a setup has ended normally again.
+    void init();
     // Collective, after after_check(), until explained(): the first time adhesive bonds are
     // inconsistent, say why LAMMPS warned and hide them from the check from then on.
     // 'unwrapped' holds 3 coordinates per owned and ghost atom, a ghost's as its owner has them.
@@ -47,6 +53,7 @@ namespace DPoly {
    private:
     bool reason_given;
     bool hidden;
+    bool setup_flag_stale;    // update->setupflag was left at 1 by an error
     // collective: adhesive bonds whose atoms, unwrapped, lie more than half a box apart, and all
     void count_inconsistent(const std::vector<double> &unwrapped, bigint counts[2]);
   };

@@ -74,7 +74,11 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
 }
 
-FixDPolyCells::~FixDPolyCells() = default;
+// the adhesive bonds get their types back if an error left them hidden (dpoly_image_check.h)
+FixDPolyCells::~FixDPolyCells()
+{
+  image_check->after_check();
+}
 
 FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
 {
@@ -92,6 +96,7 @@ int FixDPolyCells::setmask()
 
 void FixDPolyCells::init()
 {
+  image_check->init();    // types hidden by a setup that an error cut short
   if (domain->dimension != 2)
     error->all(FLERR, "Fix dpoly/cells needs a 2d simulation (dimension 2), got dimension {}",
                domain->dimension);
