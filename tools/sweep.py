@@ -371,16 +371,21 @@ def read_reference(path, split):
 
 
 def delta_A(growth, reference, stage):
-    """RMS of mean calA minus the reference's, each point matched with the growth step of
-    nearest porosity; None without points of that stage."""
+    """(RMS of mean calA minus the reference's, each point matched with the growth step of
+    nearest porosity; the largest porosity distance between a point and its step), or
+    (None, None) without points of that stage. The distance shows a run that never came near a
+    point's porosity (a compacting run): its delta_A then compares other stages of growth."""
     porosity = [PHI_MAX - phi for phi in growth["phi_patch"]]
-    squares = []
+    squares, gap = [], 0.0
     for p_ref, calA_ref, s in reference:
         if s != stage:
             continue
         k = min(range(len(porosity)), key=lambda i: abs(porosity[i] - p_ref))
         squares.append((growth["calA"][k] - calA_ref) ** 2)
-    return math.sqrt(sum(squares) / len(squares)) if squares else None
+        gap = max(gap, abs(porosity[k] - p_ref))
+    if not squares:
+        return None, None
+    return math.sqrt(sum(squares) / len(squares)), gap
 
 
 def nearest_half(growth):
@@ -436,15 +441,18 @@ def summarize_run(folder, reference):
                loop_s=sum(loop.seconds for loop in mesophyll_run.loop_times(text)))
     if steps and finite:
         z, phi = nearest_half(growth)
-        row.update(delta_A_early=delta_A(growth, reference, "early"),
-                   delta_A_late=delta_A(growth, reference, "late"),
+        (dA_early, gap_early), (dA_late, gap_late) = (delta_A(growth, reference, stage)
+                                                      for stage in ("early", "late"))
+        row.update(delta_A_early=dA_early, delta_A_late=dA_late,
+                   porosity_gap_early=gap_early, porosity_gap_late=gap_late,
                    delta_phi_plus=growth["dphi_plus"][-1], z_half=z, phi_half=phi,
                    phi_final=growth["phi_patch"][-1], calA_final=growth["calA"][-1])
     return row
 
 
 COLUMNS = ["run", "point", "seed", "tissue", "N", "status", "steps", "steps_planned",
-           "delta_A_early", "delta_A_late", "delta_phi_plus", "z_half", "phi_half", "phi_final",
+           "delta_A_early", "delta_A_late", "porosity_gap_early", "porosity_gap_late",
+           "delta_phi_plus", "z_half", "phi_half", "phi_final",
            "calA_final", "failed_checks", "attempts", "wall_s", "loop_s", "first_failure"]
 STATS = ["delta_A_early", "delta_A_late", "delta_phi_plus", "z_half", "phi_half", "phi_final"]
 

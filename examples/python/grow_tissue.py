@@ -14,13 +14,16 @@ perimeter, calA, z, void fraction), the pressure and the minimizer's iterations 
 prints one line, and at the end writes
 
     DIR/cells_per_step.csv   one row per cell and growth step: step cell area perimeter calA z void
-    DIR/growth.csv           one row per growth step, the columns of the input's growth table
+    DIR/growth.csv           one row per growth step: step P phi phi_patch calA z bonds
+                             iterations (the input's growth table without dphi_plus)
     DIR/per_cell.png         calA, void fraction and area of every cell against growth step,
                              phi and phi_patch
     DIR/log.lammps           LAMMPS's log
 
-The trajectory is the input's own: growth.csv equals the growth table in.mesophyll writes with the
-same variables (tests/test_python_module.py checks it). Needs numpy and matplotlib (Debian's
+The trajectory is the input's own: every minimization's thermo rows equal those of lmp running
+in.mesophyll with the same variables, and the values read at each minimum equal the log's
+(tests/test_python_module.py checks both). It runs --steps growth steps; unlike the input it does
+not stop early when phi_patch falls below phi_stop. Needs numpy and matplotlib (Debian's
 python3-numpy, python3-matplotlib; the virtual environment sees the system's packages).
 """
 import argparse
