@@ -236,7 +236,9 @@ def check_bad_plans(scratch):
              ("seeds 0", "a seed must be a positive integer, not '0'"),
              ("vary seed 1 2", "'seed' is set by the sweep itself"),
              ("growth lots", "takes a number and an integer, not 'lots'"),
-             ("tissue missing.data", "missing.data does not exist")]
+             ("tissue missing.data", "missing.data does not exist"),
+             ("vary set default nosuchset", "the set 'nosuchset' is not in"),
+             ("fixed steps 1e3", "steps must be a whole number above 0, not '1e3'")]
     for k, (line, message) in enumerate(cases):
         path = os.path.join(scratch, f"bad{k}.sweep")
         with open(path, "w") as f:

@@ -147,7 +147,8 @@ class SweepFile:
 
 
 def protocol_variables(protocol):
-    """Every variable the protocol defines (it and the files it includes by a plain name)."""
+    """Every variable the protocol file itself defines (not those of files it includes: a
+    protocol that includes files must define the variables a sweep sets in its own lines)."""
     names, text = set(), open(protocol).read()
     for match in re.finditer(r"^\s*variable\s+(\w+)", text, re.MULTILINE):
         names.add(match.group(1))
@@ -158,7 +159,8 @@ def parameter_sets(path):
     """{set: {name: value}} of a parameter file (doc/mesophyll_parameters.rst)."""
     sets = {}
     with open(path) as f:
-        next(f)    # the metadata line
+        if next(f, None) is None:    # the metadata line
+            sys.exit(f"{path}: an empty parameter file")
         for line in f:
             words = line.split("#")[0].split()
             if words:
@@ -207,6 +209,12 @@ def plan(args):
         if name in ("N", "tissue", "seed", "parameters", "resume"):
             sys.exit(f"{sweep.path}: '{name}' is set by the sweep itself (seeds, tissue, "
                      f"parameters lines), not by vary, point or fixed")
+    for name, value in [(n, v) for point in grid for n, v in point] + list(sweep.fixed.items()):
+        if name == "set" and value not in sets:
+            sys.exit(f"{sweep.path}: the set '{value}' is not in {sweep.parameters} "
+                     f"(it has: {' '.join(sets)})")
+        if name == "steps" and not (value.isdigit() and int(value) > 0):
+            sys.exit(f"{sweep.path}: steps must be a whole number above 0, not '{value}'")
     if "steps" in sweep.fixed and sweep.growth:
         sys.exit(f"{sweep.path}: give either 'growth' or 'fixed steps', not both")
 
@@ -227,7 +235,14 @@ def plan(args):
                 runs.append({"point": point_label(point), "point_values": dict(point),
                              "tissue": tissue, "seed": seed, "values": values})
     width = len(str(len(runs)))
-    os.makedirs(os.path.join(args.dir, "runs"), exist_ok=True)
+    planned = {f"{k:0{width}d}" for k in range(1, len(runs) + 1)}
+    runs_dir = os.path.join(args.dir, "runs")
+    stale = sorted(d for d in (os.listdir(runs_dir) if os.path.isdir(runs_dir) else [])
+                   if d not in planned and os.path.exists(os.path.join(runs_dir, d, "run.json")))
+    if stale:
+        sys.exit(f"{runs_dir} holds runs {', '.join(stale)} that this plan does not have (an "
+                 f"earlier, other plan); plan a changed sweep into a new folder")
+    os.makedirs(runs_dir, exist_ok=True)
     tool = os.path.abspath(__file__)
     for k, run in enumerate(runs, 1):
         run["id"] = f"{k:0{width}d}"
@@ -397,7 +412,8 @@ def read_times(path):
     """(wall seconds of the finishing attempt, attempts) from times.txt."""
     if not os.path.exists(path):
         return None, 0
-    stamps = [line.split() for line in open(path) if line.strip()]
+    # a line cut short by a kill is passed over
+    stamps = [words for words in (line.split() for line in open(path)) if len(words) == 2]
     starts = [float(t) for kind, t in stamps if kind == "start"]
     if stamps and stamps[-1][0] == "end" and starts:
         return float(stamps[-1][1]) - starts[-1], len(starts)

@@ -47,7 +47,10 @@ def read_summary(folder):
     path = os.path.join(folder, "summary.csv")
     if not os.path.exists(path):
         sys.exit(f"{path} does not exist: run tools/sweep.py summary {folder} first")
-    return list(csv.DictReader(open(path)))
+    rows = list(csv.DictReader(open(path)))
+    if not rows:
+        sys.exit(f"{path} lists no runs: plan and run the sweep, then summarize it")
+    return rows
 
 
 def number(text):
