@@ -354,6 +354,13 @@ def main():
         plan(sweep_file, folder)
         first = run_sweep(args, folder, expect_ok=False)
         expect(first != 0, "the sweep with an unreadable data file ended with exit code 0")
+        # a summary before the sweep is started again already reads the error from the log
+        subprocess.run([sys.executable, SWEEP, "summary", folder], check=True,
+                       stdout=subprocess.DEVNULL)
+        early = [r for r in csv.DictReader(open(os.path.join(folder, "summary.csv")))
+                 if r["tissue"].endswith("broken.data")]
+        expect(early and early[0]["status"] == "error" and "ERROR" in early[0]["first_failure"],
+               f"unreadable data file before the restart: {early}")
         run_sweep(args, folder)
         subprocess.run([sys.executable, SWEEP, "summary", folder], check=True)
         status = {r["tissue"].rsplit("/", 1)[-1]: r for r in

@@ -438,6 +438,9 @@ def summarize_run(folder, reference):
     finished = open(marker).read().strip() if os.path.exists(marker) else None
     steps = len(growth.get("step", []))
     finite = all(math.isfinite(x) for column in growth.values() for x in column)
+    error = last_attempt_error(log) if finished is None else None
+    if error:    # a LAMMPS error stopped the job; the summary came before the next start
+        finished = f"error {error}"    # marked it
     if finished is None:
         status = "unfinished"
     elif finished.startswith("error"):
