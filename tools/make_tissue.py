@@ -60,11 +60,6 @@ RELAX_INPUT = os.path.join(ROOT, "examples", "tissue", "in.relax_tissue")
 IMAGES = np.array([(a, b) for a in (-1, 0, 1) for b in (-1, 0, 1)], dtype=float)
 
 
-def polygon_area(p):
-    x, y = p[:, 0], p[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
-
-
 def polygon_centroid(p):
     x, y = p[:, 0], p[:, 1]
     cross = x * np.roll(y, -1) - np.roll(x, -1) * y
