@@ -17,7 +17,6 @@ for value. Prints a table and writes bench/results/shared_library.csv and .png.
 import argparse
 import csv
 import os
-import resource
 import statistics
 import sys
 import tempfile
@@ -29,15 +28,10 @@ import mesophyll_run    # noqa: E402
 RESULTS = os.path.join(ROOT, "bench", "results")
 
 
-def cpu_of_children():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
-
-
 def one_run(lmp, input_name, variables, work):
-    before = cpu_of_children()
+    before = mesophyll_run.children_cpu_seconds()
     run = mesophyll_run.run(lmp, input_name, work, variables, capture=True)
-    cpu = cpu_of_children() - before
+    cpu = mesophyll_run.children_cpu_seconds() - before
     return cpu, sum(loop.seconds for loop in run.loops), run.thermo
 
 

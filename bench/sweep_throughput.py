@@ -15,7 +15,6 @@ speed-up is wall(1) / wall(P). Needs python3-matplotlib for the PNG.
 import argparse
 import csv
 import os
-import resource
 import shutil
 import subprocess
 import sys
@@ -23,11 +22,8 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def children_cpu():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import mesophyll_run  # noqa: E402
 
 
 def run(args, partitions, scratch):
@@ -54,9 +50,9 @@ def run(args, partitions, scratch):
     if partitions > 1:
         command = ["mpirun", "-np", str(partitions), "--oversubscribe"] + command[:1] + \
             ["-partition", f"{partitions}x1"] + command[1:]
-    cpu0, wall0 = children_cpu(), time.perf_counter()
+    cpu0, wall0 = mesophyll_run.children_cpu_seconds(), time.perf_counter()
     subprocess.run(command, cwd=folder, env=env, check=True, stdout=subprocess.DEVNULL)
-    wall, cpu = time.perf_counter() - wall0, children_cpu() - cpu0
+    wall, cpu = time.perf_counter() - wall0, mesophyll_run.children_cpu_seconds() - cpu0
     runs = len(os.listdir(os.path.join(folder, "runs")))
     finished = sum(os.path.exists(os.path.join(folder, "runs", r, "finished"))
                    for r in os.listdir(os.path.join(folder, "runs")))

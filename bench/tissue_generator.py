@@ -20,7 +20,6 @@ import argparse
 import csv
 import os
 import platform
-import resource
 import subprocess
 import sys
 import tempfile
@@ -31,6 +30,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 import mesophyll_frames  # noqa: E402
+import mesophyll_run  # noqa: E402
 from regression import tissue_commands  # noqa: E402
 
 mesophyll_frames.require(["numpy", "matplotlib"])
@@ -49,18 +49,13 @@ run 0 post no
 """
 
 
-def children_cpu():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
-
-
 def timed(command, cwd):
-    cpu, wall = children_cpu(), time.perf_counter()
+    cpu, wall = mesophyll_run.children_cpu_seconds(), time.perf_counter()
     result = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"tissue_generator: {' '.join(command)} failed:\n{result.stdout[-3000:]}"
                  f"{result.stderr[-3000:]}")
-    return children_cpu() - cpu, time.perf_counter() - wall
+    return mesophyll_run.children_cpu_seconds() - cpu, time.perf_counter() - wall
 
 
 def measure(lmp, data, workdir):

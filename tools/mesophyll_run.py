@@ -33,6 +33,7 @@ import collections
 import glob
 import os
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -54,6 +55,13 @@ EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
 CHECK = re.compile(r"^fix dpoly/check: minimum (\d+) at step (\d+): (.*?)(?:; FAILED; (.*))?$",
                    re.MULTILINE)
 GROWTH = re.compile(r"growth\.N(\d+)\.txt$")
+
+
+def children_cpu_seconds():
+    """User + system CPU seconds of this process's finished children (lmp, mpirun and what
+    they ran): take the difference around a run to get its CPU time."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def loop_times(log):
