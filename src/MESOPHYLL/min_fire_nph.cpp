@@ -120,7 +120,7 @@ void MinFireNph::setup_style()
 
   double mass_local = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
-    mass_local += atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+    mass_local += atom_mass(i);
   const double mass_total = global_sum(mass_local);
   const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
 
@@ -212,17 +212,19 @@ void MinFireNph::zero_velocities()
    returns |f|^2, which the divergence check reuses
 ------------------------------------------------------------------------- */
 
+double MinFireNph::atom_mass(int i) const
+{
+  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+}
+
 double MinFireNph::mix_velocities()
 {
   // steer mass: FIRE in the coordinates sqrt(m) x, in which every degree of freedom has unit
   // mass (velocity sqrt(m) v, force f/sqrt(m)); the published code's NPH-FIRE steers its box
   // area, of unit mass, so. steer force: v and f as they are, a heavy box steered like an atom.
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   double local[2] = {0.0, 0.0};
   for (int i = 0; i < nvec; i++) {
-    const double m = steer_by_mass ? (rmass ? rmass[i / 3] : mass[type[i / 3]]) : 1.0;
+    const double m = steer_by_mass ? atom_mass(i / 3) : 1.0;
     local[0] += m * velocity[i] * velocity[i];
     local[1] += fvec[i] * fvec[i] / m;
   }
@@ -238,7 +240,7 @@ double MinFireNph::mix_velocities()
   const double keep = 1.0 - alpha;
   const double steer = alpha * sqrt(all[0] / all[1]);
   for (int i = 0; i < nvec; i++) {
-    const double m = steer_by_mass ? (rmass ? rmass[i / 3] : mass[type[i / 3]]) : 1.0;
+    const double m = steer_by_mass ? atom_mass(i / 3) : 1.0;
     velocity[i] = keep * velocity[i] + steer * fvec[i] / m;
   }
   for (int k = 0; k < nextra_global; k++) {
@@ -330,14 +332,7 @@ int MinFireNph::iterate(int maxiter)
     }
 
     // semi-implicit Euler: kick with the current forces, steer, then drift
-    const int *type = atom->type;
-    const double *rmass = atom->rmass;
-    const double *mass = atom->mass;
-    for (int i = 0; i < nvec; i++) {
-      const int atom_index = i / 3;
-      const double m = rmass ? rmass[atom_index] : mass[type[atom_index]];
-      velocity[i] += dt * ftm2v * fvec[i] / m;
-    }
+    for (int i = 0; i < nvec; i++) velocity[i] += dt * ftm2v * fvec[i] / atom_mass(i / 3);
     for (int k = 0; k < nextra_global; k++)
       box_velocity[k] += dt * ftm2v * fextra[k] / box_length[k] / box_mass[k];
     check_force_norm(mix_velocities());

@@ -72,6 +72,8 @@ class MinFireNph : public Min {
   Power vdotf() const;
   void zero_velocities();
   double mix_velocities();
+  // mass of owned atom i (per-atom rmass or per-type mass)
+  double atom_mass(int i) const;
   Drift displacement_time() const;
   void move(double);
 
