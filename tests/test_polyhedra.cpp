@@ -6,6 +6,7 @@
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -161,6 +162,25 @@ TEST(Polyhedra, RegularIcosahedronEnergiesAreAnalytic)
   // edge tension: each edge contributes -r dU/dr / (3 V_box)
   const double edge_slope = (a / l0 - 1.0) / l0;
   EXPECT_NEAR(s.thermo("press"), (-volume * slope - 30 * a * edge_slope / 3.0) / box, 1.0e-12);
+}
+
+// The generator's preferred values are those of the written (jittered) geometry, every edge its
+// own: each term must find its own edge's values, so the cells are at rest.
+TEST(Polyhedra, WrittenGeometryIsAtRest)
+{
+  LammpsSession s;
+  s.run(setup_commands(data_file("cells3d_deformed.data")) + "run 0 post no");
+  const std::vector<double> l0 = s.gather("d2_edge_l0", EDGE_SLOTS);
+  ASSERT_GT(*std::max_element(l0.begin(), l0.end()) -
+                *std::min_element(l0.begin(), l0.end(), [](double a, double b) {
+                  return (a > 0.0 ? a : 1e300) < (b > 0.0 ? b : 1e300);
+                }),
+            0.05)
+      << "the edges should have different preferred lengths";
+  EXPECT_NEAR(s.thermo("ebond"), 0.0, 1.0e-24);
+  EXPECT_NEAR(s.thermo("edihed"), 0.0, 1.0e-24);
+  EXPECT_NEAR(s.thermo("f_cells"), 0.0, 1.0e-24);
+  EXPECT_LT(max_abs(s.gather("f", 3)), 1.0e-10);
 }
 
 TEST(Polyhedra, AllTermsMatchFiniteDifferences)
