@@ -251,6 +251,27 @@ TEST(Polyhedra, NoNetForceOrTorque)
     EXPECT_NEAR(s->equal_variable("c_net[" + std::to_string(k) + "]"), 0.0, 1.0e-11 * scale);
 }
 
+// The per-atom virial (compute stress/atom, all terms and the hub's volume term) sums to the
+// global one: at zero temperature sum(s_xx + s_yy + s_zz) = -3 P V_box.
+TEST(Polyhedra, PerAtomVirialSumsToPressure)
+{
+  for (const std::string newton : {"on", "off"}) {
+    auto s = deformed_cells({newton, 1.0, 1.0, 0.4});
+    s->run("compute stress all stress/atom NULL virial\n"
+           "compute total all reduce sum c_stress[1] c_stress[2] c_stress[3] c_stress[4] "
+           "c_stress[5] c_stress[6]\n"
+           "thermo_style custom step pe press c_total[*]\nrun 0 post no");
+    const double volume = s->equal_variable("vol");
+    const char *keys[6] = {"pxx", "pyy", "pzz", "pxy", "pxz", "pyz"};
+    for (int k = 0; k < 6; k++) {
+      const double global = s->thermo(keys[k]);
+      EXPECT_NEAR(s->equal_variable("c_total[" + std::to_string(k + 1) + "]"), -global * volume,
+                  1.0e-10 * std::fabs(s->thermo("press")) * volume)
+          << keys[k] << " newton_bond " << newton;
+    }
+  }
+}
+
 TEST(Polyhedra, NewtonBondOnAndOffAgree)
 {
   auto on = deformed_cells({"on", 1.0, 1.0, 0.4});
@@ -420,6 +441,8 @@ TEST_F(BadInput3d, StylesAndState)
                           {"fix bad all dpoly3d/cells eps_v", "Illegal fix dpoly3d/cells eps_v"},
                           {"fix bad all dpoly3d/cells volume 1", "Unknown fix dpoly3d/cells keyword: volume"},
                           {"fix bad all dpoly3d/cells\nrun 0 post no", "Only one fix dpoly3d/cells"},
+                          {"angle_style harmonic\nangle_coeff * 1.0 60\nrun 0 post no",
+                           "needs angle_style zero for the faces"},
                           {"set atom 5 d_v0 0\nrun 0 post no", "vertex 5 has v0 = 0"},
                           {"set atom 5 d_v0 2\nrun 0 post no", "different v0"},
                           {"set atom 5 d_sigma -1\nrun 0 post no", "vertex 5 has sigma = -1"},
@@ -456,6 +479,22 @@ TEST_F(BadInput3d, Topology)
               HasSubstr("encloses the volume"));
   EXPECT_THAT(error_of(setup_commands(edited_data({{"Dihedrals", wrong_wing}})) + "run 0 post no"),
               HasSubstr("does not join two faces"));
+  // one face of a second angle type, of angle_style harmonic in a hybrid
+  auto two_types = [](const std::string &line, int) {
+    return line == "1 angle types" ? std::string("2 angle types") : line;
+  };
+  auto second_type = [](const std::string &line, int index) {
+    if (index != 0) return line;
+    const auto w = words(line);
+    return w[0] + " 2 " + w[2] + " " + w[3] + " " + w[4];
+  };
+  std::string hybrid =
+      setup_commands(edited_data({{"MESOPHYLL", two_types}, {"Angles", second_type}}));
+  hybrid.replace(hybrid.find("angle_style zero"), 16, "angle_style hybrid zero harmonic");
+  hybrid.replace(hybrid.find("angle_coeff *\n"), 14,
+                 "angle_coeff 1 zero\nangle_coeff 2 harmonic 1.0 60\n");
+  EXPECT_THAT(error_of(hybrid + "run 0 post no"),
+              HasSubstr("has an angle type of another style than zero"));
   // a bond between vertices 1 and 3, which share no face, and a second bond on edge 1-12
   EXPECT_THAT(error_of(with_room_for_bonds(setup_commands(data_file("icosahedron.data"))) +
                        "create_bonds single/bond 1 1 3 special no\nrun 0 post no"),

@@ -6,6 +6,7 @@
 #include "fix_dpoly3d_cells.h"
 
 #include "atom.h"
+#include "angle.h"
 #include "atom_vec.h"
 #include "bond.h"
 #include "comm.h"
@@ -113,6 +114,11 @@ void FixDPoly3dCells::init()
                "{} needs bonds (edges), angles (faces) and dihedrals (hinges), e.g. atom_style "
                "molecular",
                STYLE);
+  if (!force->angle_match("zero"))
+    error->all(FLERR,
+               "{} needs angle_style zero for the faces: a face only bounds the volume and must "
+               "carry no energy of its own",
+               STYLE);
   if (!force->bond_match("dpoly3d/edge"))
     error->all(FLERR, "{} needs bond_style dpoly3d/edge for the edges", STYLE);
   if (!force->dihedral_match("dpoly3d/hinge"))
@@ -197,7 +203,9 @@ void FixDPoly3dCells::check_surfaces()
   edge_values.fetch(atom, error, STYLE);
   Bond *edge_style = force->bond_match("dpoly3d/edge");
   Dihedral *hinge_style = force->dihedral_match("dpoly3d/hinge");
+  Angle *face_style = force->angle_match("zero");
   const int newton_bond = force->newton_bond;
+  tagint energetic_face = 0;    // middle atom of a face whose angle type is not angle_style zero
 
   std::vector<VertexRecord> vertices;
   std::vector<FaceRecord> faces;
@@ -208,8 +216,11 @@ void FixDPoly3dCells::check_surfaces()
     const tagint self = atom->tag[i];
     vertices.push_back({self, atom->molecule[i], state.diameter[i], state.preferred_volume[i]});
     for (int m = 0; m < atom->num_angle[i]; m++)
-      if (atom->angle_atom2[i][m] == self)
+      if (atom->angle_atom2[i][m] == self) {
         faces.push_back({atom->angle_atom1[i][m], self, atom->angle_atom3[i][m]});
+        const int type = atom->angle_type[i][m];
+        if (type <= 0 || !face_style->setflag[type]) energetic_face = std::max(energetic_face, self);
+      }
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
       const tagint partner = atom->bond_atom[i][m];
@@ -241,6 +252,13 @@ void FixDPoly3dCells::check_surfaces()
       valued.push_back(edge(self, partner));
     }
   }
+  tagint energetic_any = 0;
+  MPI_Allreduce(&energetic_face, &energetic_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (energetic_any)
+    error->all(FLERR,
+               "{}: a face (angle) centred on vertex {} has an angle type of another style than "
+               "zero; faces must be angles of angle_style zero (in hybrid: of its zero sub-style)",
+               STYLE, energetic_any);
   vertices = DPoly::gather_on_all_ranks(std::move(vertices), world);
   faces = DPoly::gather_on_all_ranks(std::move(faces), world);
   bonds = DPoly::gather_on_all_ranks(std::move(bonds), world);
