@@ -12,6 +12,10 @@ configs = {
                               "--shift", "0.3", "--spacing", "1.3"],
     # one regular icosahedron of circumradius 1: analytic energies and relaxation
     "icosahedron.data": ["--cells", "1", "--level", "0", "--spacing", "2.0"],
+    # two overlapping cells (across the boundary too) with large vertex spheres, so that
+    # neighbours across a face overlap as well: contacts between and within cells
+    "cells3d_touching.data": ["--cells", "2", "--level", "1", "--jitter", "0.05", "--seed", "9",
+                              "--spacing", "0.9", "--shift", "0.1", "--sigma", "1.0"],
 }
 for name, args in configs.items():
     subprocess.run([sys.executable, generator, os.path.join(outdir, name)] + args, check=True)

@@ -243,7 +243,7 @@ TEST(Polyhedra, NoNetForceOrTorque)
          "variable ty atom c_unwrapped[3]*fx-c_unwrapped[1]*fz\n"
          "variable tz atom c_unwrapped[1]*fy-c_unwrapped[2]*fx\n"
          "compute net all reduce sum fx fy fz v_tx v_ty v_tz\n"
-         "thermo_style custom step pe c_net[*]\nrun 0 post no");
+         "thermo_style custom step pe c_net[*]\nthermo_modify norm no\nrun 0 post no");
   const double scale = max_abs(s->gather("f", 3));
   for (int k = 1; k <= 3; k++)
     EXPECT_NEAR(s->equal_variable("c_net[" + std::to_string(k) + "]"), 0.0, 1.0e-12 * scale);
@@ -260,7 +260,7 @@ TEST(Polyhedra, PerAtomVirialSumsToPressure)
     s->run("compute stress all stress/atom NULL virial\n"
            "compute total all reduce sum c_stress[1] c_stress[2] c_stress[3] c_stress[4] "
            "c_stress[5] c_stress[6]\n"
-           "thermo_style custom step pe press c_total[*]\nrun 0 post no");
+           "thermo_style custom step pe press c_total[*]\nthermo_modify norm no\nrun 0 post no");
     const double volume = s->equal_variable("vol");
     const char *keys[6] = {"pxx", "pyy", "pzz", "pxy", "pxz", "pyz"};
     for (int k = 0; k < 6; k++) {
@@ -364,6 +364,122 @@ TEST(Polyhedra, SingleCellRelaxesToAnalyticState)
     if (eps_l == 0.0) EXPECT_NEAR(s.equal_variable("f_cells[2]"), v0, 1.0e-8);
     EXPECT_NEAR(s.thermo("edihed"), 0.0, 1.0e-14) << eps_l;
   }
+}
+
+// ---------------------------------------------------------------------------------------
+// Contacts: pair_style dpoly3d/contact between overlapping vertex spheres.
+
+namespace {
+
+std::string contact_commands(const std::string &self, const std::string &newton_pair)
+{
+  std::string cmds = setup_commands(data_file("cells3d_touching.data"));
+  cmds.replace(cmds.find("newton on on"), 12, "newton " + newton_pair + " on");
+  return cmds + "special_bonds lj 1.0 1.0 1.0\npair_style dpoly3d/contact self " + self +
+      "\npair_coeff * * 1.0\nthermo_style custom step pe evdwl ebond edihed f_cells press\n"
+         "thermo_modify norm no\n";
+}
+
+std::unique_ptr<LammpsSession> touching_cells(const std::string &self = "yes",
+                                              const std::string &newton_pair = "on",
+                                              MPI_Comm comm = MPI_COMM_WORLD)
+{
+  auto s = std::make_unique<LammpsSession>(comm);
+  s->run(contact_commands(self, newton_pair));
+  s->run(PERTURB);
+  s->run("run 0 post no");
+  return s;
+}
+
+}    // namespace
+
+// The contact energy is the sum over every overlapping pair (nearest images) of different cells,
+// and with 'self yes' of one cell unless an edge joins them, of (1/2)(1 - r/s)^2.
+TEST(Polyhedra, ContactEnergyIsTheSumOverOverlaps)
+{
+  for (const std::string self : {"yes", "no"}) {
+    auto s = touching_cells(self);
+    const int n = s->natoms();
+    const std::vector<double> x = s->gather("x", 3), sigma = s->gather("d_sigma", 1);
+    const std::vector<int> molecule = s->gather_int("molecule", 1);
+    const std::vector<int> partners = s->gather_int("i2_edge", EDGE_SLOTS);
+    const double box = s->equal_variable("lx");
+    double energy = 0.0;
+    int between = 0, within = 0;
+    for (int i = 0; i < n; i++)
+      for (int j = i + 1; j < n; j++) {
+        bool edge = false;
+        for (int k = 0; k < EDGE_SLOTS; k++) edge |= partners[EDGE_SLOTS * i + k] == j + 1;
+        if (molecule[i] == molecule[j] && (edge || self == "no")) continue;
+        double rsq = 0.0;
+        for (int d = 0; d < 3; d++) {
+          double dx = x[3 * i + d] - x[3 * j + d];
+          dx -= box * std::round(dx / box);
+          rsq += dx * dx;
+        }
+        const double contact = 0.5 * (sigma[i] + sigma[j]), r = std::sqrt(rsq);
+        if (r >= contact) continue;
+        energy += 0.5 * std::pow(1.0 - r / contact, 2);
+        (molecule[i] == molecule[j] ? within : between)++;
+      }
+    ASSERT_GT(between, 10) << "the cells should overlap";
+    if (self == "yes") ASSERT_GT(within, 10) << "vertices across a face should overlap";
+    EXPECT_NEAR(s->thermo("evdwl"), energy, 1.0e-12 * energy) << "self " << self;
+  }
+}
+
+// one rank: the law's gradient; ContactPressureAndRanks compares several ranks with one
+TEST(Polyhedra, ContactMatchesFiniteDifferences)
+{
+  if (world_size() > 1) GTEST_SKIP() << "checked on one rank, compared across ranks below";
+  for (const std::string newton_pair : {"on", "off"}) {
+    auto s = touching_cells("yes", newton_pair);
+    ASSERT_GT(s->thermo("evdwl"), 1.0e-3);
+    EXPECT_LT(finite_difference_error_3d(*s), 1.0e-7) << "newton_pair " << newton_pair;
+  }
+}
+
+TEST(Polyhedra, ContactPressureAndRanks)
+{
+  auto on = touching_cells("yes", "on");
+  auto off = touching_cells("yes", "off");
+  EXPECT_NEAR(on->thermo("evdwl"), off->thermo("evdwl"), 1.0e-13 * on->thermo("evdwl"));
+  EXPECT_NEAR(on->thermo("press"), off->thermo("press"), 1.0e-12 * std::fabs(on->thermo("press")));
+  EXPECT_LT(relative_force_error(on->gather("f", 3), off->gather("f", 3)), 1.0e-13);
+
+  const double lx = on->equal_variable("lx"), ly = on->equal_variable("ly"),
+               lz = on->equal_variable("lz");
+  const double e = 1.0e-5;
+  const double iso = -(energy_after_scaling_3d(*on, 1 + e, 1 + e, 1 + e) -
+                       energy_after_scaling_3d(*on, 1 - e, 1 - e, 1 - e)) /
+      (lx * ly * lz * (std::pow(1 + e, 3) - std::pow(1 - e, 3)));
+  EXPECT_NEAR(on->thermo("press"), iso, 1.0e-7 * std::fabs(iso));
+
+  if (world_size() > 1) {
+    auto serial = touching_cells("yes", "on", self_comm());
+    for (const char *keyword : {"pe", "evdwl", "press"})
+      EXPECT_NEAR(on->thermo(keyword), serial->thermo(keyword),
+                  1.0e-12 * std::max(1.0, std::fabs(serial->thermo(keyword))))
+          << keyword;
+    EXPECT_LT(relative_force_error(serial->gather("f", 3), on->gather("f", 3)), 1.0e-12);
+  }
+}
+
+TEST(Polyhedra, ContactRestartAndSingle)
+{
+  const std::string restart = scratch("touching3d.restart");
+  auto before = touching_cells();
+  before->run("compute pairs all pair/local eng\ncompute psum all reduce sum c_pairs inputs local\n"
+              "thermo_style custom step pe evdwl c_psum\nthermo_modify norm no\nrun 0 post no");
+  EXPECT_NEAR(before->thermo("c_psum"), before->thermo("evdwl"), 1.0e-12 * before->thermo("evdwl"));
+  before->run("write_restart " + restart);
+  LammpsSession after;
+  after.run("read_restart " + restart + "\n" + CELL_STATE +
+            "comm_modify cutoff 2.0\nfix cells all dpoly3d/cells eps_v 1.0\n"
+            "thermo_style custom step pe evdwl\nthermo_modify norm no\nrun 0 post no");
+  EXPECT_EQ(before->thermo("evdwl"), after.thermo("evdwl"));
+  EXPECT_EQ(before->thermo("pe"), after.thermo("pe"));
+  if (world_size() == 1) remove(restart.c_str());
 }
 
 // ---------------------------------------------------------------------------------------
