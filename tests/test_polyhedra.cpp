@@ -102,8 +102,8 @@ double energy_after_scaling_3d(LammpsSession &s, double sx, double sy, double sz
 {
   char cmd[256];
   snprintf(cmd, sizeof(cmd),
-           "change_box all x scale %.17g y scale %.17g z scale %.17g remap\nrun 0 post no", sx,
-           sy, sz);
+           "change_box all x scale %.17g y scale %.17g z scale %.17g remap\nrun 0 post no", sx, sy,
+           sz);
   s.run(cmd);
   const double u = s.thermo("pe");
   snprintf(cmd, sizeof(cmd),
@@ -172,9 +172,10 @@ TEST(Polyhedra, WrittenGeometryIsAtRest)
   s.run(setup_commands(data_file("cells3d_deformed.data")) + "run 0 post no");
   const std::vector<double> l0 = s.gather("d2_edge_l0", EDGE_SLOTS);
   ASSERT_GT(*std::max_element(l0.begin(), l0.end()) -
-                *std::min_element(l0.begin(), l0.end(), [](double a, double b) {
-                  return (a > 0.0 ? a : 1e300) < (b > 0.0 ? b : 1e300);
-                }),
+                *std::min_element(l0.begin(), l0.end(),
+                                  [](double a, double b) {
+                                    return (a > 0.0 ? a : 1e300) < (b > 0.0 ? b : 1e300);
+                                  }),
             0.05)
       << "the edges should have different preferred lengths";
   EXPECT_NEAR(s.thermo("ebond"), 0.0, 1.0e-24);
@@ -377,7 +378,7 @@ std::string contact_commands(const std::string &self, const std::string &newton_
   cmds.replace(cmds.find("newton on on"), 12, "newton " + newton_pair + " on");
   return cmds + "special_bonds lj 1.0 1.0 1.0\npair_style dpoly3d/contact self " + self +
       "\npair_coeff * * 1.0\nthermo_style custom step pe evdwl ebond edihed f_cells press\n"
-         "thermo_modify norm no\n";
+      "thermo_modify norm no\n";
 }
 
 std::unique_ptr<LammpsSession> touching_cells(const std::string &self = "yes",
@@ -552,20 +553,22 @@ TEST_F(BadInput3d, StylesAndState)
   std::string no_ghosts = base;
   no_ghosts.replace(no_ghosts.find("d2_edge_theta0 6 ghost yes"), 26, "d2_edge_theta0 6");
   EXPECT_THAT(error_of(no_ghosts + "run 0 post no"), HasSubstr("on ghost atoms too"));
-  expect_errors(base, {
-                          {"fix bad all dpoly3d/cells eps_v -1", "eps_v must be finite and >= 0, got -1"},
-                          {"fix bad all dpoly3d/cells eps_v", "Illegal fix dpoly3d/cells eps_v"},
-                          {"fix bad all dpoly3d/cells volume 1", "Unknown fix dpoly3d/cells keyword: volume"},
-                          {"fix bad all dpoly3d/cells\nrun 0 post no", "Only one fix dpoly3d/cells"},
-                          {"angle_style harmonic\nangle_coeff * 1.0 60\nrun 0 post no",
-                           "needs angle_style zero for the faces"},
-                          {"set atom 5 d_v0 0\nrun 0 post no", "vertex 5 has v0 = 0"},
-                          {"set atom 5 d_v0 2\nrun 0 post no", "different v0"},
-                          {"set atom 5 d_sigma -1\nrun 0 post no", "vertex 5 has sigma = -1"},
-                          {"set group all d_v0 1e-200\nrun 0 post no", "is not finite"},
-                          {"set atom 1 i2_edge[1] 0\nrun 0 post no", "sets of preferred values"},
-                          {"set atom 1 d2_edge_l0[1] 0\nrun 0 post no", "l0 = 0"},
-                      });
+  expect_errors(
+      base,
+      {
+          {"fix bad all dpoly3d/cells eps_v -1", "eps_v must be finite and >= 0, got -1"},
+          {"fix bad all dpoly3d/cells eps_v", "Illegal fix dpoly3d/cells eps_v"},
+          {"fix bad all dpoly3d/cells volume 1", "Unknown fix dpoly3d/cells keyword: volume"},
+          {"fix bad all dpoly3d/cells\nrun 0 post no", "Only one fix dpoly3d/cells"},
+          {"angle_style harmonic\nangle_coeff * 1.0 60\nrun 0 post no",
+           "needs angle_style zero for the faces"},
+          {"set atom 5 d_v0 0\nrun 0 post no", "vertex 5 has v0 = 0"},
+          {"set atom 5 d_v0 2\nrun 0 post no", "different v0"},
+          {"set atom 5 d_sigma -1\nrun 0 post no", "vertex 5 has sigma = -1"},
+          {"set group all d_v0 1e-200\nrun 0 post no", "is not finite"},
+          {"set atom 1 i2_edge[1] 0\nrun 0 post no", "sets of preferred values"},
+          {"set atom 1 d2_edge_l0[1] 0\nrun 0 post no", "l0 = 0"},
+      });
 }
 
 TEST_F(BadInput3d, Topology)
@@ -591,8 +594,10 @@ TEST_F(BadInput3d, Topology)
   };
   EXPECT_THAT(error_of(setup_commands(edited_data({{"Angles", flip_first}})) + "run 0 post no"),
               HasSubstr("runs the same way in two faces"));
-  EXPECT_THAT(error_of(setup_commands(edited_data({{"Angles", flip_all}, {"Dihedrals", swap_wings}})) + "run 0 post no"),
-              HasSubstr("encloses the volume"));
+  EXPECT_THAT(
+      error_of(setup_commands(edited_data({{"Angles", flip_all}, {"Dihedrals", swap_wings}})) +
+               "run 0 post no"),
+      HasSubstr("encloses the volume"));
   EXPECT_THAT(error_of(setup_commands(edited_data({{"Dihedrals", wrong_wing}})) + "run 0 post no"),
               HasSubstr("does not join two faces"));
   // one face of a second angle type, of angle_style harmonic in a hybrid

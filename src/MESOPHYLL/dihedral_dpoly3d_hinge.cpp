@@ -102,7 +102,6 @@ void DihedralDPoly3dHinge::compute(int eflag, int vflag)
     if (evflag)
       ev_tally(i1, i2, i3, i4, nlocal, newton_bond, edihedral, f1, f3, f4, x[i1][0] - x[i2][0],
                x[i1][1] - x[i2][1], x[i1][2] - x[i2][2], x[i3][0] - x[i2][0], x[i3][1] - x[i2][1],
-               x[i3][2] - x[i2][2], x[i4][0] - x[i3][0], x[i4][1] - x[i3][1],
-               x[i4][2] - x[i3][2]);
+               x[i3][2] - x[i2][2], x[i4][0] - x[i3][0], x[i4][1] - x[i3][1], x[i4][2] - x[i3][2]);
   }
 }

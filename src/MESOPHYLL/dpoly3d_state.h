@@ -27,8 +27,8 @@ namespace DPoly3d {
 
   // Per-vertex arrays; fetch again after atoms migrate or arrays grow.
   struct VertexState {
-    double *diameter;           // sigma
-    double *preferred_volume;   // v0 of the vertex's cell
+    double *diameter;            // sigma
+    double *preferred_volume;    // v0 of the vertex's cell
   };
 
   class VertexStateCache {

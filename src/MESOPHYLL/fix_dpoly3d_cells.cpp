@@ -5,8 +5,8 @@
 
 #include "fix_dpoly3d_cells.h"
 
-#include "atom.h"
 #include "angle.h"
+#include "atom.h"
 #include "atom_vec.h"
 #include "bond.h"
 #include "comm.h"
@@ -74,8 +74,7 @@ FixDPoly3dCells::FixDPoly3dCells(LAMMPS *lmp, int narg, char **arg) :
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix dpoly3d/cells eps_v", error);
       volume_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(volume_eps >= 0.0) || !std::isfinite(volume_eps))
-        error->all(FLERR, "Fix dpoly3d/cells eps_v must be finite and >= 0, got {}",
-                   arg[iarg + 1]);
+        error->all(FLERR, "Fix dpoly3d/cells eps_v must be finite and >= 0, got {}", arg[iarg + 1]);
       iarg += 2;
     } else
       error->all(FLERR, "Unknown fix dpoly3d/cells keyword: {}", arg[iarg]);
@@ -219,7 +218,8 @@ void FixDPoly3dCells::check_surfaces()
       if (atom->angle_atom2[i][m] == self) {
         faces.push_back({atom->angle_atom1[i][m], self, atom->angle_atom3[i][m]});
         const int type = atom->angle_type[i][m];
-        if (type <= 0 || !face_style->setflag[type]) energetic_face = std::max(energetic_face, self);
+        if (type <= 0 || !face_style->setflag[type])
+          energetic_face = std::max(energetic_face, self);
       }
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
@@ -229,8 +229,7 @@ void FixDPoly3dCells::check_surfaces()
     }
     for (int m = 0; m < atom->num_dihedral[i]; m++) {
       const int type = atom->dihedral_type[i][m];
-      if (type <= 0 || !hinge_style->setflag[type] || atom->dihedral_atom2[i][m] != self)
-        continue;
+      if (type <= 0 || !hinge_style->setflag[type] || atom->dihedral_atom2[i][m] != self) continue;
       hinges.push_back({atom->dihedral_atom1[i][m], self, atom->dihedral_atom3[i][m],
                         atom->dihedral_atom4[i][m]});
     }
@@ -247,8 +246,8 @@ void FixDPoly3dCells::check_surfaces()
         error->one(FLERR, "{}: edge {}-{} has l0 = {}; it must be finite and > 0", STYLE, self,
                    partner, edge_values.preferred_length(i, k));
       if (!std::isfinite(edge_values.preferred_angle(i, k)))
-        error->one(FLERR, "{}: edge {}-{} has theta0 = {}; it must be finite", STYLE, self,
-                   partner, edge_values.preferred_angle(i, k));
+        error->one(FLERR, "{}: edge {}-{} has theta0 = {}; it must be finite", STYLE, self, partner,
+                   edge_values.preferred_angle(i, k));
       valued.push_back(edge(self, partner));
     }
   }
@@ -264,7 +263,8 @@ void FixDPoly3dCells::check_surfaces()
   bonds = DPoly::gather_on_all_ranks(std::move(bonds), world);
   hinges = DPoly::gather_on_all_ranks(std::move(hinges), world);
   valued = DPoly::gather_on_all_ranks(std::move(valued), world);
-  if (vertices.empty()) error->all(FLERR, "{}: group {} holds no vertices", STYLE, group->names[igroup]);
+  if (vertices.empty())
+    error->all(FLERR, "{}: group {} holds no vertices", STYLE, group->names[igroup]);
 
   // vertices and cells
   std::map<tagint, tagint> molecule_of;
@@ -272,11 +272,12 @@ void FixDPoly3dCells::check_surfaces()
   const char *hint = "set it in the Vertices section of the data file or with the set command";
   for (const auto &v : vertices) {
     if (v.molecule <= 0)
-      error->all(FLERR, "{}: vertex {} has molecule ID {}; each cell must be a molecule with ID > 0",
+      error->all(FLERR,
+                 "{}: vertex {} has molecule ID {}; each cell must be a molecule with ID > 0",
                  STYLE, v.tag, v.molecule);
     if (!(std::isfinite(v.diameter) && v.diameter > 0.0))
-      error->all(FLERR, "{}: vertex {} has sigma = {}; it must be finite and > 0: {}", STYLE,
-                 v.tag, v.diameter, hint);
+      error->all(FLERR, "{}: vertex {} has sigma = {}; it must be finite and > 0: {}", STYLE, v.tag,
+                 v.diameter, hint);
     if (!(std::isfinite(v.preferred_volume) && v.preferred_volume > 0.0))
       error->all(FLERR, "{}: vertex {} has v0 = {}; it must be finite and > 0: {}", STYLE, v.tag,
                  v.preferred_volume, hint);
@@ -336,8 +337,7 @@ void FixDPoly3dCells::check_surfaces()
   }
   for (const auto &v : vertices)
     if (!on_faces.count(v.tag))
-      error->all(FLERR, "{}: vertex {} of cell {} is on no face (angle)", STYLE, v.tag,
-                 v.molecule);
+      error->all(FLERR, "{}: vertex {} of cell {} is on no face (angle)", STYLE, v.tag, v.molecule);
   for (size_t c = 0; c < cell_ids.size(); c++) {
     const int nv = vertex_counts[c], ne = edge_counts[cell_ids[c]], nf = face_counts[cell_ids[c]];
     if (nv - ne + nf != 2)
@@ -361,8 +361,8 @@ void FixDPoly3dCells::check_surfaces()
       const auto n = count.find(o.first);
       const int times = n == count.end() ? 0 : n->second;
       if (times != 1)
-        error->all(FLERR, "{}: edge {}-{} of cell {} has {} {}, not one; {}", STYLE,
-                   o.first.first, o.first.second, molecule_of[o.first.first], times, what, fix);
+        error->all(FLERR, "{}: edge {}-{} of cell {} has {} {}, not one; {}", STYLE, o.first.first,
+                   o.first.second, molecule_of[o.first.first], times, what, fix);
     }
   };
   check_once(as_pairs(bonds), "dpoly3d/edge bonds",
@@ -475,8 +475,10 @@ void FixDPoly3dCells::measure_cells()
     if (!(atom->mask[i] & groupbit)) continue;
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
-      error->one(FLERR, "{}: vertex {} belongs to molecule {}, which was not a cell when the run "
-                 "started", STYLE, atom->tag[i], atom->molecule[i]);
+      error->one(FLERR,
+                 "{}: vertex {} belongs to molecule {}, which was not a cell when the run "
+                 "started",
+                 STYLE, atom->tag[i], atom->molecule[i]);
     double pb[3];
     domain->unmap(x[i], atom->image[i], pb);
     for (int m = 0; m < atom->num_angle[i]; m++) {

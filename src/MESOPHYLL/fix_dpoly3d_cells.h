@@ -65,8 +65,8 @@ class FixDPoly3dCells : public Fix {
   std::vector<int> vertex_counts;
   std::vector<double> preferred_volumes, volumes, surface_areas, volume_slopes;    // dU/dV
 
-  std::vector<double> unwrapped;       // owned and ghost atoms' unwrapped positions
-  std::vector<double> volume_forces;   // owned and ghost atoms, reverse-communicated
+  std::vector<double> unwrapped;        // owned and ghost atoms' unwrapped positions
+  std::vector<double> volume_forces;    // owned and ghost atoms, reverse-communicated
 
   void refresh_cells();
   void check_surfaces();

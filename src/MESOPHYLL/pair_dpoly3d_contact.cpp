@@ -77,7 +77,8 @@ bool PairDPoly3dContact::acts_between(int i, int j) const
   if (!self_contact) return false;
   const tagint other = atom->tag[j];
   const tagint *partners = atom->special[i];
-  return std::find(partners, partners + atom->nspecial[i][0], other) == partners + atom->nspecial[i][0];
+  return std::find(partners, partners + atom->nspecial[i][0], other) ==
+      partners + atom->nspecial[i][0];
 }
 
 bool PairDPoly3dContact::interacts(int i, int j, double rsq, double s) const

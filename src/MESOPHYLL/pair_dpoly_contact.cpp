@@ -142,8 +142,7 @@ void PairDPolyContact::init_style()
 double PairDPolyContact::init_one(int i, int j)
 {
   if (setflag[i][j] == 0)
-    error->all(FLERR, "Pair style {}: coefficient for types {} {} is not set", style_name, i,
-               j);
+    error->all(FLERR, "Pair style {}: coefficient for types {} {} is not set", style_name, i, j);
   contact_stiffness[j][i] = contact_stiffness[i][j];
   return largest_diameter;
 }
