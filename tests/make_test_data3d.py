@@ -16,6 +16,8 @@ configs = {
     # neighbours across a face overlap as well: contacts between and within cells
     "cells3d_touching.data": ["--cells", "2", "--level", "1", "--jitter", "0.05", "--seed", "9",
                               "--spacing", "0.9", "--shift", "0.1", "--sigma", "1.0"],
+    # one 642-vertex cell: data-file lines of full-precision per-edge values
+    "icosphere3.data": ["--cells", "1", "--level", "3", "--spacing", "2.0"],
 }
 for name, args in configs.items():
     subprocess.run([sys.executable, generator, os.path.join(outdir, name)] + args, check=True)

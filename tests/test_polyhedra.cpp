@@ -24,8 +24,9 @@ using namespace test;
 namespace {
 
 const char *CELL_STATE = "fix Vertices all property/atom d_sigma d_v0 ghost yes\n"
-                         "fix Edges all property/atom i2_edge 6 d2_edge_l0 6 d2_edge_theta0 6 "
-                         "ghost yes\n";
+                         "fix Edges all property/atom i2_edge 6 ghost yes\n"
+                         "fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes\n"
+                         "fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes\n";
 const int EDGE_SLOTS = 6;
 
 struct Model {
@@ -40,9 +41,12 @@ std::string setup_commands(const std::string &data, const Model &m = Model())
       m.newton_bond + "\n" + CELL_STATE +
       "bond_style dpoly3d/edge\nangle_style zero\ndihedral_style dpoly3d/hinge\n"
       "read_data " +
-      data + " fix Vertices NULL Vertices fix Edges NULL Edges\n" + "bond_coeff * " +
-      std::to_string(m.eps_l) + "\nangle_coeff *\ndihedral_coeff * " + std::to_string(m.eps_b) +
-      "\ncomm_modify cutoff 2.0\nfix cells all dpoly3d/cells eps_v " + std::to_string(m.eps_v) +
+      data +
+      " fix Vertices NULL Vertices fix Edges NULL Edges fix EdgeLengths NULL EdgeLengths fix "
+      "EdgeAngles NULL EdgeAngles\n" +
+      "bond_coeff * " + std::to_string(m.eps_l) + "\nangle_coeff *\ndihedral_coeff * " +
+      std::to_string(m.eps_b) + "\ncomm_modify cutoff 2.0\nfix cells all dpoly3d/cells eps_v " +
+      std::to_string(m.eps_v) +
       "\nthermo_style custom step pe ebond edihed f_cells press pxx pyy pzz pxy pxz pyz\n"
       "thermo_modify norm no\n";
 }
@@ -181,6 +185,18 @@ TEST(Polyhedra, WrittenGeometryIsAtRest)
   EXPECT_NEAR(s.thermo("ebond"), 0.0, 1.0e-24);
   EXPECT_NEAR(s.thermo("edihed"), 0.0, 1.0e-24);
   EXPECT_NEAR(s.thermo("f_cells"), 0.0, 1.0e-24);
+  EXPECT_LT(max_abs(s.gather("f", 3)), 1.0e-10);
+}
+
+// A 642-vertex cell, whose per-edge values fill their data-file lines with full-precision
+// numbers, is at rest as written: read_data kept every digit.
+TEST(Polyhedra, FinestCellIsAtRest)
+{
+  LammpsSession s;
+  s.run(setup_commands(data_file("icosphere3.data")) + "run 0 post no");
+  ASSERT_EQ(s.natoms(), 642);
+  EXPECT_NEAR(s.thermo("ebond"), 0.0, 1.0e-24);
+  EXPECT_NEAR(s.thermo("edihed"), 0.0, 1.0e-24);
   EXPECT_LT(max_abs(s.gather("f", 3)), 1.0e-10);
 }
 
@@ -552,6 +568,7 @@ TEST_F(BadInput3d, StylesAndState)
   EXPECT_THAT(error_of(two_d + "run 0 post no"), HasSubstr("needs a 3d simulation"));
   std::string no_ghosts = base;
   no_ghosts.replace(no_ghosts.find("d2_edge_theta0 6 ghost yes"), 26, "d2_edge_theta0 6");
+  ASSERT_EQ(no_ghosts.find("d2_edge_theta0 6 ghost yes"), std::string::npos);
   EXPECT_THAT(error_of(no_ghosts + "run 0 post no"), HasSubstr("on ghost atoms too"));
   expect_errors(
       base,

@@ -10,13 +10,16 @@ Cells sit on a simple cubic lattice in a periodic cubic box. The topology is LAM
 * every edge one dihedral a b c d with faces (a, b, c) and (c, b, d) (type 1, dihedral_style
   dpoly3d/hinge).
 
-Per-vertex state goes into a "Vertices" section (id sigma v0), per-edge state into an "Edges"
-section (id, then K partner IDs, K preferred lengths, K preferred bending angles; each edge on
-its lower-ID vertex, unused columns 0), read with
+Per-vertex state goes into a "Vertices" section (id sigma v0), per-edge state into the sections
+"Edges" (id, then K partner IDs), "EdgeLengths" (id, K preferred lengths) and "EdgeAngles" (id,
+K preferred bending angles): each edge on its lower-ID vertex, unused columns 0. Read with
 
     fix Vertices all property/atom d_sigma d_v0 ghost yes
-    fix Edges all property/atom i2_edge 6 d2_edge_l0 6 d2_edge_theta0 6 ghost yes
-    read_data cells3d.data fix Vertices NULL Vertices fix Edges NULL Edges
+    fix Edges all property/atom i2_edge 6 ghost yes
+    fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes
+    fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes
+    read_data cells3d.data fix Vertices NULL Vertices fix Edges NULL Edges &
+              fix EdgeLengths NULL EdgeLengths fix EdgeAngles NULL EdgeAngles
 
 Preferred lengths and angles are those of the written geometry (after `--jitter`); v0 is the
 cell's volume unless `--v0` gives one; sigma is the mean edge length unless `--sigma` gives one.
@@ -167,14 +170,21 @@ def write(path, args, box, atoms, vertex_state, bonds, angles, dihedrals, edges)
         out.write("\nVertices\n\n")
         for tag, sigma, v0 in vertex_state:
             out.write(f"{tag} {sigma!r} {v0!r}\n")
-        out.write("\nEdges\n\n")
+        # three sections, one per fix: a line of all three would outgrow read_data's 255
+        # characters at 6 columns of full-precision numbers and be cut short silently
+        owned = {}
         for tag, *_ in vertex_state:
-            owned = sorted(edges.get(tag, []))
-            owned += [(0, 0.0, 0.0)] * (k - len(owned))
-            columns = [str(e[0]) for e in owned] + [repr(e[1]) for e in owned] + \
-                [repr(e[2]) for e in owned]
-            out.write(f"{tag} {' '.join(columns)}\n")
-
+            row = sorted(edges.get(tag, []))
+            owned[tag] = row + [(0, 0.0, 0.0)] * (k - len(row))
+        for section, column in (("Edges", 0), ("EdgeLengths", 1), ("EdgeAngles", 2)):
+            out.write(f"\n{section}\n\n")
+            for tag, row in owned.items():
+                values = [str(e[0]) if column == 0 else repr(e[column]) for e in row]
+                line = f"{tag} {' '.join(values)}"
+                if len(line) > 255:
+                    raise SystemExit(f"{section} line of vertex {tag} is {len(line)} characters, "
+                                     "more than read_data reads (255): use fewer --edge-slots")
+                out.write(line + "\n")
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])

@@ -14,7 +14,8 @@ using namespace LAMMPS_NS;
 
 const char *const DPoly3d::VERTEX_HINT = "fix Vertices all property/atom d_sigma d_v0 ghost yes";
 const char *const DPoly3d::EDGE_HINT =
-    "fix Edges all property/atom i2_edge 6 d2_edge_l0 6 d2_edge_theta0 6 ghost yes";
+    "fix Edges all property/atom i2_edge 6 ghost yes; fix EdgeLengths all property/atom "
+    "d2_edge_l0 6 ghost yes; fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes";
 
 // index of a custom property of the given kind (flag: 0 int, 1 double; cols: 0 a vector, -1 any
 // number of columns), with ghost atoms; an error that says how to define it otherwise

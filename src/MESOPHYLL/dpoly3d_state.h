@@ -7,7 +7,10 @@
 // migrates, reaches ghost atoms and goes into restart and data files with LAMMPS's own
 // machinery (doc/Howto_polyhedra.rst, "Topology and per-edge state"):
 //   fix Vertices all property/atom d_sigma d_v0 ghost yes
-//   fix Edges all property/atom i2_edge K d2_edge_l0 K d2_edge_theta0 K ghost yes
+//   fix Edges all property/atom i2_edge K ghost yes
+//   fix EdgeLengths all property/atom d2_edge_l0 K ghost yes
+//   fix EdgeAngles all property/atom d2_edge_theta0 K ghost yes
+// (three fixes, so that each data-file line stays within read_data's 255 characters)
 // Every edge's preferred length and bending angle sit on its lower-ID vertex, in the column whose
 // i2_edge holds the other vertex's ID (0: unused column).
 
