@@ -54,25 +54,27 @@ void PairDPolyContact::settings(int narg, char **arg)
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "self") == 0) {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style dpoly/contact self", error);
+      if (iarg + 2 > narg)
+        utils::missing_cmd_args(FLERR, "pair_style " + style_name + " self", error);
       self_contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
     } else
-      error->all(FLERR, "Unknown pair_style dpoly/contact keyword: {}", arg[iarg]);
+      error->all(FLERR, "Unknown pair_style {} keyword: {}", style_name, arg[iarg]);
   }
 }
 
 void PairDPolyContact::coeff(int narg, char **arg)
 {
   if (narg != 3)
-    error->all(FLERR, "Pair style dpoly/contact takes one coefficient (eps_c), got {}", narg - 2);
+    error->all(FLERR, "Pair style {} takes one coefficient (eps_c), got {}", style_name, narg - 2);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
   const double eps_c = utils::numeric(FLERR, arg[2], false, lmp);
-  if (eps_c < 0.0) error->all(FLERR, "Pair style dpoly/contact eps_c must be >= 0, got {}", arg[2]);
+  if (eps_c < 0.0)
+    error->all(FLERR, "Pair style {} eps_c must be >= 0, got {}", style_name, arg[2]);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
@@ -82,7 +84,7 @@ void PairDPolyContact::coeff(int narg, char **arg)
       count++;
     }
   if (count == 0)
-    error->all(FLERR, "Pair style dpoly/contact: no type pair in {} {}", arg[0], arg[1]);
+    error->all(FLERR, "Pair style {}: no type pair in {} {}", style_name, arg[0], arg[1]);
 }
 
 void PairDPolyContact::init_style()
@@ -140,7 +142,7 @@ void PairDPolyContact::init_style()
 double PairDPolyContact::init_one(int i, int j)
 {
   if (setflag[i][j] == 0)
-    error->all(FLERR, "Pair style dpoly/contact: coefficient for types {} {} is not set", i, j);
+    error->all(FLERR, "Pair style {}: coefficient for types {} {} is not set", style_name, i, j);
   contact_stiffness[j][i] = contact_stiffness[i][j];
   return largest_diameter;
 }

@@ -15,6 +15,8 @@ PairStyle(dpoly/contact,PairDPolyContact);
 #include "dpoly_ring.h"
 #include "pair.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 // Repulsion between overlapping vertex disks: U = (eps_c/2)(1 - r/s)^2 for r < s, with
@@ -45,6 +47,7 @@ class PairDPolyContact : public Pair {
   int self_contact;              // repel non-adjacent vertices of the same cell
   double largest_diameter;       // max sigma when the run started: the cutoff
   DPoly::VertexStateCache vertex_state;
+  std::string style_name = "dpoly/contact";    // as messages name the style
   void allocate();
   bool skip(int i, int j, tagint prev, tagint next) const;
   bool interacts(int i, int j, double rsq, double s) const;
