@@ -570,6 +570,13 @@ TEST_F(BadInput3d, StylesAndState)
   no_ghosts.replace(no_ghosts.find("d2_edge_theta0 6 ghost yes"), 26, "d2_edge_theta0 6");
   ASSERT_EQ(no_ghosts.find("d2_edge_theta0 6 ghost yes"), std::string::npos);
   EXPECT_THAT(error_of(no_ghosts + "run 0 post no"), HasSubstr("on ghost atoms too"));
+  // ten columns: a data file's line of them would be longer than read_data reads
+  const std::string ten_columns = base +
+      "unfix Edges\nunfix EdgeLengths\nunfix EdgeAngles\n"
+      "fix Edges all property/atom i2_edge 10 ghost yes\n"
+      "fix EdgeLengths all property/atom d2_edge_l0 10 ghost yes\n"
+      "fix EdgeAngles all property/atom d2_edge_theta0 10 ghost yes\n";
+  EXPECT_THAT(error_of(ten_columns + "run 0 post no"), HasSubstr("have 10 columns, at most 9"));
   expect_errors(
       base,
       {

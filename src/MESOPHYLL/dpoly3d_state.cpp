@@ -57,6 +57,13 @@ void DPoly3d::EdgeValues::find(Atom *atom, Error *error, const char *style)
                "{}: i2_edge, d2_edge_l0 and d2_edge_theta0 must have the same number of columns, "
                "got {}, {} and {}",
                style, ncolumns, atom->dcols[length_index], atom->dcols[angle_index]);
+  // read_data reads at most 255 characters of a line and drops the rest without a word: one
+  // vertex's line of more than 9 full-precision values would lose digits in a data file
+  if (ncolumns > MAX_EDGE_COLUMNS)
+    error->all(FLERR,
+               "{}: i2_edge, d2_edge_l0 and d2_edge_theta0 have {} columns, at most {} fit in a "
+               "line that read_data reads whole",
+               style, ncolumns, MAX_EDGE_COLUMNS);
 }
 
 void DPoly3d::EdgeValues::fetch(Atom *atom, Error *error, const char *style)

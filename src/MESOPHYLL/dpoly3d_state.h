@@ -51,6 +51,7 @@ namespace DPoly3d {
   // The per-edge values of local atoms (owned or ghost).
   class EdgeValues {
    public:
+    static constexpr int MAX_EDGE_COLUMNS = 9;
     void find(Atom *atom, Error *error, const char *style);
     // fetch the arrays for this force evaluation (after find())
     void fetch(Atom *atom, Error *error, const char *style);
