@@ -15,7 +15,8 @@ relaxes the initial tissue to P0; each later one is a growth step), no restart f
 minimization: FIRE iterations, vertices, the loop's wall seconds and its CPU seconds (LAMMPS's
 "% CPU use" x wall x ranks), CPU microseconds per iteration per vertex, LAMMPS's per-rank memory
 (the largest "Per MPI rank memory allocation", its mean x ranks per vertex, in bytes). The
-growth-step cost is the mean over the growth steps (minimizations 2 on); its slope against N is
+growth-step cost is the mean over the growth steps (minimizations 2 on) that every run reached
+(a killed run read by --report-only may have fewer); its slope against N is
 fitted on log-log axes per rank count (CPU and wall), and so is that of the iterations per growth
 step. The 2-rank speed-up is the ratio of wall loop times: on a machine shared with other jobs
 it is not to be trusted (the CPU figures are).
@@ -81,10 +82,13 @@ def develop(args, data, cells, ranks, steps, work):
     instead (None, None with --report-only when there is none)."""
     folder = os.path.join(work, f"N{cells}_np{ranks}_s{steps}")
     log, cpu_file = os.path.join(folder, "log.scaling"), os.path.join(folder, "process_cpu_s")
-    if os.path.exists(log) and "Total wall time" in open(log).read():
+    text = open(log).read() if os.path.exists(log) else ""
+    finished = "Total wall time" in text
+    if finished or (args.report_only and len(mesophyll_run.loop_times(text)) >= 2):
         run = mesophyll_run.read(folder, "log.scaling")
         cpu = float(open(cpu_file).read()) if os.path.exists(cpu_file) else None
-        print(f"(read the finished run in {folder})", flush=True)
+        print(f"(read the {'finished' if finished else 'UNFINISHED (killed)'} run in {folder}: "
+              f"{len(run.loops)} minimizations)", flush=True)
     elif args.report_only:
         print(f"(no finished run of {cells} cells on {ranks} ranks in {work}: left out)",
               flush=True)
@@ -220,7 +224,8 @@ def main():
                    help="keep the runs' folders here; finished runs found there are read, "
                         "not rerun (a killed bench continues)")
     p.add_argument("--report-only", action="store_true",
-                   help="run nothing: report the finished runs in --keep, leave out the rest")
+                   help="run nothing: report the runs in --keep (also killed ones with a growth "
+                        "step done, said so), leave out the rest")
     p.add_argument("--csv", default=os.path.join(HERE, "results", "scaling.csv"))
     p.add_argument("--png", default=os.path.join(HERE, "results", "scaling.png"))
     args = p.parse_args()
@@ -257,7 +262,17 @@ def main():
                 rows.append({"kind": "process_cpu", "cells": cells, "ranks": ranks,
                              "value": round(cpu, 2), "note": "CPU s of the whole run (getrusage)"})
 
-    print("\ngrowth steps (minimizations 2 on), means:")
+    # compare like with like: the growth steps that every run got to (a killed run has fewer)
+    done = {}
+    for r in rows:
+        if r["kind"] == "minimization" and r["minimization"] > 1:
+            key = (r["cells"], r["ranks"])
+            done[key] = max(done.get(key, 0), r["minimization"] - 1)
+    common = min(done.values()) if done else 0
+    for r in rows:
+        if r["kind"] == "minimization" and r["minimization"] - 1 > common:
+            r["growth_step"] = "not compared"
+    print(f"\ngrowth steps 1 to {common} (minimizations 2 to {common + 1}), means:")
     print(f"{'cells':>6} {'ranks':>5} {'iters':>8} {'wall s':>8} {'CPU s':>8} {'speed-up':>8}")
     for cells in args.cells:
         for ranks in args.ranks:
