@@ -2,7 +2,7 @@
 """Benchmark the growth protocol: wall time and minimizer iterations per growth step.
 
     bench/development.py [--lmp build/lmp] [--cells 16 64] [--ranks 1 2] [--steps 11]
-                         [--refine published] [--csv bench/results/development.csv] [--mpirun mpirun]
+                         [--refine published] [--csv bench/results/development.csv] [--mpirun CMD]
 
 Runs examples/mesophyll/in.mesophyll (default parameter set, min_style fire/nph) for each number
 of cells and MPI ranks, one after the other, with vertex insertion by fix dpoly/refine rules --refine
@@ -54,7 +54,8 @@ def main():
     p.add_argument("--refine", default="published",
                    help="fix dpoly/refine rules (published, consistent, tension); none: no insertion")
     p.add_argument("--csv", default=os.path.join(HERE, "results", "development.csv"))
-    p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--mpirun", default=None,
+                   help="MPI launcher (default $MESOPHYLL_MPIRUN, else mpirun: tools/mpi_launcher.py)")
     args = p.parse_args()
     args.lmp = os.path.abspath(args.lmp)
 

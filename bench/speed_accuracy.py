@@ -48,7 +48,7 @@ KNOBS = [("ftol", ["1e-6", "1e-8", "1e-10"]), ("min", ["cg"]), ("delta_a", ["0.2
          ("refine", ["published", "consistent"]), ("ranks", [2])]
 
 
-def run(lmp, cells, setting, workroot, mpirun="mpirun"):
+def run(lmp, cells, setting, workroot, mpirun=None):
     name = "_".join(f"{k}{v}" for k, v in setting.items()).replace("/", "")
     steps = int(round(TOTAL_GROWTH / float(setting["delta_a"])))
     result = mesophyll_run.run(

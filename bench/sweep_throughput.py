@@ -24,6 +24,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import mesophyll_run  # noqa: E402
+import mpi_launcher  # noqa: E402
 
 
 def run(args, partitions, scratch):
@@ -46,10 +47,9 @@ def run(args, partitions, scratch):
     subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sweep.py"), "plan", sweep_file,
                     folder], check=True, stdout=subprocess.DEVNULL)
     command = [args.lmp, "-in", os.path.join(ROOT, "examples", "sweep", "in.sweep")]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     if partitions > 1:
-        command = ["mpirun", "-np", str(partitions), "--oversubscribe"] + command[:1] + \
-            ["-partition", f"{partitions}x1"] + command[1:]
+        command = command[:1] + ["-partition", f"{partitions}x1"] + command[1:]
+    command, env = mpi_launcher.command(partitions, command)
     cpu0, wall0 = mesophyll_run.children_cpu_seconds(), time.perf_counter()
     subprocess.run(command, cwd=folder, env=env, check=True, stdout=subprocess.DEVNULL)
     wall, cpu = time.perf_counter() - wall0, mesophyll_run.children_cpu_seconds() - cpu0

@@ -4,7 +4,7 @@
     tools/make_tissue.py tissue.data --cells 64 [--seed 1] [--vertices 32] [--calA0 1.14]
                          [--polydispersity 0] [--pressure 1e-6] [--pack-pressure 3e-4]
                          [--pack-rate 3e-3] [--start-phi 0.6] [--lloyd 1] [--lmp build/lmp]
-                         [--np 1] [--rings-only]
+                         [--np 1] [--mpirun CMD] [--mpirun-flags FLAGS] [--rings-only]
 
 examples/tissue/in.make_tissue packs regular rings from a dilute box in about a hundred 1%
 compressions, each relaxed to a force tolerance (about 2.3 million FIRE iterations for 16
@@ -35,8 +35,10 @@ cells). This tool starts next to contact and packs in one enthalpy minimization:
 
 The defaults (--pack-pressure 3e-4, --pack-rate 3e-3, --lloyd 1) were chosen so that the tissues
 match in.make_tissue's (bench/tissue_generator.py). Randomness comes from --seed alone, never
-from the number of MPI ranks; the relaxation draws nothing. Needs python3-numpy and
-python3-scipy (Debian).
+from the number of MPI ranks; the relaxation draws nothing. With --np N > 1 the relaxation runs
+under the launcher of tools/mpi_launcher.py (--mpirun and --mpirun-flags, else $MESOPHYLL_MPIRUN
+and $MESOPHYLL_MPIRUN_FLAGS, else Debian's Open MPI: mpirun -np N --oversubscribe). Needs
+python3-numpy and python3-scipy (Debian).
 """
 import argparse
 import math
@@ -54,6 +56,7 @@ import numpy as np  # noqa: E402
 from scipy.spatial import Voronoi  # noqa: E402
 
 import make_cells  # noqa: E402
+import mpi_launcher  # noqa: E402
 
 RELAX_INPUT = os.path.join(ROOT, "examples", "tissue", "in.relax_tissue")
 # the 3 x 3 periodic images of the seeds: the regions of the middle copy are closed and whole
@@ -206,10 +209,7 @@ def relax(args, rings, output):
                "-log", os.path.abspath(args.log) if args.log else "none"]
     for name, value in variables.items():
         command += ["-var", name, value]
-    env = dict(os.environ)
-    if args.np > 1:
-        command = args.mpirun.split() + ["-np", str(args.np), "--oversubscribe"] + command
-        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command, env = mpi_launcher.command(args.np, command, args.mpirun, args.mpirun_flags)
     summary = None
     with subprocess.Popen(command, cwd=os.path.dirname(os.path.abspath(output)), env=env, text=True,
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT) as lmp:
@@ -286,7 +286,11 @@ def main():
                    help="write the seeded rings and stop (no LAMMPS relaxation)")
     p.add_argument("--lmp", default=None, help="LAMMPS executable (default build/lmp)")
     p.add_argument("--np", type=int, default=1, help="MPI ranks for the relaxation (default 1)")
-    p.add_argument("--mpirun", default="mpirun", help="MPI launcher (default mpirun)")
+    p.add_argument("--mpirun", default=None,
+                   help="MPI launcher command (default $MESOPHYLL_MPIRUN, else mpirun)")
+    p.add_argument("--mpirun-flags", default=None,
+                   help="launcher flags after the rank count (default $MESOPHYLL_MPIRUN_FLAGS, "
+                        "else --oversubscribe for Open MPI, none for others)")
     p.add_argument("--ftol", type=float, default=1.0e-10,
                    help="force tolerance of the minimizations (default 1e-10)")
     p.add_argument("--pack-pressure", type=float, default=3.0e-4,

@@ -8,10 +8,12 @@ scratch(workdir, example=EXAMPLE, files=())
     Copies the example folder (and the extra files) into workdir, leaving out growth tables a
     run in the example folder may have left; returns workdir.
 run(lmp, input, workdir, variables=None, ranks=1, example=EXAMPLE, files=(), log="log.lammps",
-    mpirun="mpirun", check=True, capture=False, timeout=None)
+    mpirun=None, mpirun_flags=None, check=True, capture=False, timeout=None)
     Runs `lmp -in input -var NAME VALUE ... -log log -screen none` in workdir (first made by
-    scratch() unless example is None), under `mpirun -np ranks` (--oversubscribe beyond 2 ranks,
-    allowed as root) when ranks > 1. check: raise subprocess.CalledProcessError on a non-zero
+    scratch() unless example is None), when ranks > 1 under the MPI launcher of
+    tools/mpi_launcher.py (mpirun and mpirun_flags, else $MESOPHYLL_MPIRUN and
+    $MESOPHYLL_MPIRUN_FLAGS, else Debian's Open MPI: mpirun --oversubscribe, allowed as
+    root). check: raise subprocess.CalledProcessError on a non-zero
     exit; capture: keep LAMMPS's stdout and stderr off the terminal (in Run.output); timeout:
     seconds, subprocess.TimeoutExpired past it. Returns a Run.
 read(workdir, log="log.lammps", returncode=None, wall=0.0, output="")
@@ -43,6 +45,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(ROOT, "examples", "mesophyll")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from regression import thermo_blocks  # noqa: E402,F401  (the thermo-table reader of the tests)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mpi_launcher  # noqa: E402
 
 Loop = collections.namedtuple("Loop", "seconds procs steps atoms cpu")
 Check = collections.namedtuple("Check", "minimum step text failed problems")
@@ -114,17 +118,15 @@ def read(workdir, log="log.lammps", returncode=None, wall=0.0, output=""):
 
 
 def run(lmp, input, workdir, variables=None, ranks=1, example=EXAMPLE, files=(),
-        log="log.lammps", mpirun="mpirun", check=True, capture=False, timeout=None):
+        log="log.lammps", mpirun=None, mpirun_flags=None, check=True, capture=False,
+        timeout=None):
     if example is not None:
         scratch(workdir, example, files)
     command = [lmp, "-in", input]
     for name, value in (variables or {}).items():
         command += ["-var", name, str(value)]
     command += ["-log", log, "-screen", "none"]
-    if ranks > 1:
-        command = mpirun.split() + ["-np", str(ranks)] + \
-            (["--oversubscribe"] if ranks > 2 else []) + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command, env = mpi_launcher.command(ranks, command, mpirun, mpirun_flags)
     start = time.perf_counter()
     result = subprocess.run(command, cwd=workdir, env=env, capture_output=capture, text=True,
                             timeout=timeout)

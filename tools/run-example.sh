@@ -44,9 +44,19 @@ else
   rm -rf "$work"; mkdir -p "$work"; cp -rL "$src/." "$work/"
   cd "$work"
 fi
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if [ "$np" -gt 1 ]; then
-  mpirun -np "$np" --oversubscribe "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
+  # the launcher as tools/mpi_launcher.py chooses it: $MESOPHYLL_MPIRUN (default mpirun),
+  # $MESOPHYLL_NUMPROC_FLAG (-np), $MESOPHYLL_MPIRUN_FLAGS (default for Open MPI
+  # --oversubscribe, and its run-as-root variables; for other launchers none)
+  read -r -a launcher <<< "${MESOPHYLL_MPIRUN:-mpirun}"
+  flags=""
+  if "${launcher[@]}" --version 2>&1 | grep -qE "Open MPI|OpenRTE"; then
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    flags="--oversubscribe"
+  fi
+  read -r -a flags <<< "${MESOPHYLL_MPIRUN_FLAGS-$flags}"
+  "${launcher[@]}" "${MESOPHYLL_NUMPROC_FLAG:--np}" "$np" "${flags[@]}" \
+    "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
 else
   "$build_dir/lmp" -in "$input" -log "$log" "${vars[@]}"
 fi
