@@ -133,19 +133,13 @@ def run_tool(command):
     return result.stdout
 
 
-def sweep_cost(folder, rows):
-    """(runs with a finished attempt, sum of loop seconds, wall seconds from the first start
-    to the last end stamped in times.txt, statuses) of a sweep folder."""
-    starts, ends = [], []
-    for r in rows:
-        path = os.path.join(folder, "runs", r["run"], "times.txt")
-        if os.path.exists(path):
-            for words in (line.split() for line in open(path)):
-                if len(words) == 2:
-                    (starts if words[0] == "start" else ends).append(float(words[1]))
+def sweep_cost(rows):
+    """(loop seconds of all attempts, wall seconds of the finishing attempts, runs finished
+    with a wall time) of a sweep's summary rows. The wall seconds add the partitions' busy
+    time, so pauses of the sweep do not count."""
     loop = sum(float(r["loop_s"] or 0) for r in rows)
-    wall = max(ends) - min(starts) if starts and ends else None
-    return loop, wall
+    walls = [float(r["wall_s"]) for r in rows if r["wall_s"] not in ("", None)]
+    return loop, sum(walls), len(walls)
 
 
 class Sweep:
@@ -160,7 +154,7 @@ class Sweep:
         for table in ("summary", "points"):
             shutil.copy(os.path.join(folder, f"{table}.csv"),
                         os.path.join(out, f"{self.name}_{table}.csv"))
-        self.loop_s, self.wall_s = sweep_cost(folder, self.rows)
+        self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
         self.figures = []
         self.draw(extra)
 
@@ -419,14 +413,16 @@ def section(sweeps, doc_dir, command, notes):
             continue
         runs = len(sweep.rows)
         done = sum(r["status"] != "unfinished" for r in sweep.rows)
-        wall = f"{sweep.wall_s / 3600:.2f} h wall" if sweep.wall_s else "no wall time"
+        rate = (f"; {sweep.timed / (sweep.wall_s / 3600):.0f} runs per partition-hour"
+                if sweep.wall_s else "")
         seeds = sorted({r["seed"] for r in sweep.rows}, key=int)
         tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
         lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
-                  f"{', '.join(tissues)} per point; {done} of {runs} runs done; "
-                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time in all, {wall} from the "
-                  f"first start to the last end (on a shared machine the wall time depends on "
-                  f"the other jobs).", ""]
+                  f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
+                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts), "
+                  f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
+                  f"attempts of {sweep.timed} runs{rate}; on a shared machine wall times "
+                  f"depend on the other jobs).", ""]
         lines += points_table(sweep) + [""]
         lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] + [""]
     lines.append(SECTION_END)
