@@ -37,6 +37,8 @@ SECTION_END = "<!-- /sweeps -->"
 PUBLISHED_BEGIN = "<!-- published: tools/validate.py --published -->"
 # a difference counts as resolved when it exceeds this many standard errors of the difference
 RESOLVED = 2.0
+# z near phi_patch = 0.5 compares two points only where both came this close to 0.5
+NEAR_HALF = 0.05
 # the captions' highlighted points: Fig 4 (lambda, delta_a), Fig 5 (beta, eps_b)
 HIGHLIGHTED = {"fig4": ("lambda", "delta_a", [(1.5, 0.1), (2, 0.002), (5, 0.01), (5, 0.5)]),
                "fig5": ("beta", "eps_b", [(70, 0.1), (30, 0.01), (300, 0.03), (200, 0.6)])}
@@ -93,7 +95,8 @@ def compare(a, b, quantity, sign):
     """Is quantity larger (sign +1) or smaller (sign -1) at ensemble a than at b? 'holds' when
     the difference of the means, in the stated direction, exceeds RESOLVED standard errors of
     the difference (the two standard errors added in quadrature); 'opposite' when it does so
-    against it; 'not resolved' in between; 'too few runs' below two accepted runs either side.
+    against it; 'not resolved' in between; 'equal' when every run of both has the same value;
+    'too few runs' below two accepted runs either side.
     Returns (verdict, mean_a, se_a, n_a, mean_b, se_b, n_b, difference / its standard error)."""
     ma, _, sa, na = a.stats(quantity)
     mb, _, sb, nb = b.stats(quantity)
@@ -101,7 +104,9 @@ def compare(a, b, quantity, sign):
         return "too few runs", ma, sa, na, mb, sb, nb, None
     se = math.hypot(sa, sb)
     diff = sign * (ma - mb)
-    score = diff / se if se > 0 else (math.inf if diff > 0 else -math.inf if diff < 0 else 0.0)
+    if se == 0 and diff == 0:    # every run of both gives one value: no spread to resolve
+        return "equal", ma, sa, na, mb, sb, nb, 0.0
+    score = diff / se if se > 0 else (math.inf if diff > 0 else -math.inf)
     verdict = "holds" if score > RESOLVED else "opposite" if score < -RESOLVED else "not resolved"
     return verdict, ma, sa, na, mb, sb, nb, score
 
@@ -257,27 +262,34 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
         missing = name(a_values) if a is None else name(b_values)
         return f"- *{title}*: not run ({sweep.name} has no point {missing})."
     verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, sign)
+    far = [p for p in (a, b) if p.stats("phi_half")[0] is not None
+           and abs(p.stats("phi_half")[0] - 0.5) > NEAR_HALF]
+    if quantity == "z_half" and far and verdict != "too few runs":
+        verdict = "not near 0.5"
     text = {"holds": "**holds**", "opposite": "**does not hold: the opposite is resolved**",
             "not resolved": f"**cannot be told at this resolution** (difference below "
                             f"{RESOLVED:g} standard errors)",
+            "equal": f"**does not hold**: every run of both gives {fmt(ma, 'g')}",
+            "not near 0.5": f"**cannot be told**: the runs of a point ended before phi_patch "
+                            f"came within {NEAR_HALF:g} of 0.5, so z is compared at different "
+                            f"stages",
             "too few runs": "**cannot be told: fewer than two accepted runs**"}[verdict]
     return (f"- *{title}* ({quantity}; {sweep.name}): {mean_se(ma, sa, na)} at {name(a_values)} "
             f"[{a.status_text()}] against {mean_se(mb, sb, nb)} at {name(b_values)} "
-            f"[{b.status_text()}]; difference {fmt(score, '+.1f')} standard errors: {text}."
+            f"[{b.status_text()}]; difference {fmt(score, '+.1f')} standard errors: {text}. "
+            f"Where the runs ended: {name(a_values)}: {reach_note(a)}; {name(b_values)}: "
+            f"{reach_note(b)}."
             + (f" {note}" if note else ""))
 
 
-def reach_note(sweep, values):
-    """Where the runs of a point ended: the accepted runs' mean final phi_patch and phi_half,
-    and whether they reached phi_patch = 0.5 at all (else z_half is no value near 0.5)."""
-    e = sweep.at(**values) if sweep else None
-    if e is None or not e.accepted:
-        return ""
-    phi_final = e.stats("phi_final")[0]
-    phi_half = e.stats("phi_half")[0]
-    steps = e.stats("steps")[0]
-    return (f"Its runs ended at phi_patch {phi_final:.3f} on average after {steps:.0f} growth "
-            f"steps (the step nearest phi_patch 0.5 at {phi_half:.3f}).")
+def reach_note(e):
+    """Where the accepted runs of a point ended: mean growth steps and final phi_patch, and
+    phi_patch at the step nearest 0.5 (where z_half is taken)."""
+    if not e.accepted:
+        return "no accepted run"
+    steps, phi_final, phi_half = (e.stats(q)[0] for q in ("steps", "phi_final", "phi_half"))
+    return (f"{steps:.1f} minima recorded (the first before growth), phi_patch "
+            f"{phi_final:.3f} (nearest 0.5: {phi_half:.3f})")
 
 
 def unchanged_lines(sweep, values_list, reference):
@@ -296,7 +308,7 @@ def unchanged_lines(sweep, values_list, reference):
             if verdict == "too few runs":
                 continue
             compared += 1
-            resolved += verdict != "not resolved"
+            resolved += verdict not in ("not resolved", "equal")
             lines.append(f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} "
                          f"against {mean_se(mb, sb, nb)} at {reference['P0']:g}: difference "
                          f"{fmt(score, '+.1f')} standard errors")
@@ -393,16 +405,12 @@ def section(sweeps, doc_dir, command, notes):
     lines.append(claim_line("low beta with low eps_b (the highlighted (30, 0.01)) compacts", f5,
                             {"beta": 30, "eps_b": 0.01}, BASE["fig5"], "delta_phi_plus", +1))
     lines.append(claim_line("delta_a = 0.01 with lambda = 5 compacts", f4,
-                            {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus", +1,
-                            reach_note(f4, {"lambda": 5, "delta_a": 0.01})))
+                            {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus", +1))
     lines.append(claim_line("few contacts at small delta_a", f4, {"lambda": 5, "delta_a": 0.01},
-                            BASE["fig4"], "z_half", -1,
-                            reach_note(f4, {"lambda": 5, "delta_a": 0.01}) +
-                            " z_half is the contact number at that step: where it is far from "
-                            "0.5 the two ensembles are compared at different stages."))
+                            BASE["fig4"], "z_half", -1))
     lines += unchanged_lines(f6, [{"P0": 1e-5}, {"P0": 1e-4}], BASE["fig6"])
     lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
-                            "delta_phi_plus", +1, reach_note(f6, {"P0": 5e-2})))
+                            "delta_phi_plus", +1))
     lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
                             "calA_final", +1, "calA_final: mean calA at the run's last step."))
     lines += optimal_lines(sweeps)
