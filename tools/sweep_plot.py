@@ -149,8 +149,8 @@ def heatmaps(args, rows):
                 ax.annotate(count_label(*counts), (x, y), ha="center", va="center", fontsize=7,
                             color="black", xytext=(0, -14), textcoords="offset points")
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "
-                 f"({excluded(rows)}); grey: no ok run or a value <= 0; "
-                 f"per tile: ok runs / runs (and failed runs)")
+                 f"({excluded(rows)})\ngrey: no ok run or a value <= 0; "
+                 f"per tile: ok runs / runs (and failed runs)", fontsize=10)
     return fig, ["quantity", args.x, args.y, "mean", "std", "runs"], table
 
 
@@ -217,7 +217,8 @@ def against(args, rows):
         ax.set_xlabel(args.x)
         ax.legend()
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: mean and standard deviation "
-                 f"over seeds and tissues ({excluded(rows)}); labels: ok runs / runs")
+                 f"over seeds and tissues\n({excluded(rows)}); labels: ok runs / runs",
+                 fontsize=10)
     return fig, ["quantity", args.x, "mean", "std", "runs"], table
 
 
