@@ -176,13 +176,11 @@ class Sweep:
             if {x, y} <= set(self.rows[0]):
                 self.plot("heatmaps", ["--x", x, "--y", y] +
                           [a for m in marks for a in ("--mark", f"{m[0]},{m[1]}")], extra)
-            labels = [r["point"] for r in self.rows]
-            chosen = [p for p in dict.fromkeys(labels)
-                      if any(same_value(row.get(x), mx) and same_value(row.get(y), my)
-                             for mx, my in marks + [tuple(BASE[self.kind].values())]
-                             for row in self.rows if row["point"] == p)]
-            if chosen:
-                self.plot("curves", [a for p in chosen for a in ("--point", p)], extra)
+            # the curves of every point with an accepted run (the reduced grids hold the
+            # highlighted points and few others)
+            chosen = [p for p in dict.fromkeys(r["point"] for r in self.rows)
+                      if any(r["point"] == p and r["status"] in self.accept for r in self.rows)]
+            self.plot("curves", [a for p in chosen for a in ("--point", p)], extra)
         else:
             self.plot("against", ["--x", "P0"], extra)
             self.plot("curves", [], extra)
@@ -429,10 +427,13 @@ def section(sweeps, doc_dir, command, notes):
                   f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
                   f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts), "
                   f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
-                  f"attempts of {sweep.timed} runs{rate}; on a shared machine wall times "
+                  f"attempts of {sweep.timed} run{'s' if sweep.timed != 1 else ''}{rate}; "
+                  f"on a shared machine wall times "
                   f"depend on the other jobs).", ""]
         lines += points_table(sweep) + [""]
-        lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] + [""]
+        lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] or \
+            ["No figure: no run of this sweep has an accepted status."]
+        lines.append("")
     lines.append(SECTION_END)
     return "\n".join(lines) + "\n"
 
@@ -472,8 +473,9 @@ def main():
     started = time.time()
     sweeps = {k: Sweep(k, folder, args.out, set(args.accept)) for k, folder in given.items()}
     notes = [s.borrow_base(sweeps.get("fig6")) for k, s in sweeps.items() if k != "fig6"]
-    shown = lambda f: (os.path.relpath(f, ROOT) if os.path.abspath(f).startswith(ROOT + os.sep)  # noqa: E731
-                       else os.path.abspath(f))
+    def shown(folder):    # as typed from the package's folder, where it lies inside
+        path = os.path.abspath(folder)
+        return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
     command = "tools/sweep_report.py " + " ".join(f"--{k} {shown(f)}" for k, f in given.items())
     write_section(args.doc, section(sweeps, os.path.dirname(os.path.abspath(args.doc)),
                                     command, [n for n in notes if n]))
