@@ -52,8 +52,8 @@ DEFAULT_REFERENCE = os.path.join(ROOT, "examples", "sweep", "reference_paper_tex
 SWEEP_VARIABLES = {"runs", "run", "sweep_state", "sweep_finish", "protocol", "skip",
                    "resuming", "resume_from", "sweep_note"}
 # fix dpoly/check problems after which a minimum is not a state of the model at all; the other
-# two kinds (not converged, P off P0) make a run "unconverged"
-CONVERGENCE_PROBLEMS = ("minimizer stopped without converging", "|P - P0|/P0 =")
+# two kinds (not converged, P off P0), as fix dpoly/check words them, make a run "unconverged"
+CONVERGENCE_PROBLEMS = ("the minimizer stopped without converging", "|P - P0|/P0 =")
 
 
 # --- the sweep file ------------------------------------------------------------------------------

@@ -15,6 +15,9 @@ Figs 4-6.
     tools/sweep_plot.py against DIR --x P0 [-o PNG]
         delta_A early and late and delta_phi_plus against one grid axis (log), ensemble mean
         with the standard deviation as error bars.
+Each heatmap tile and each point of `against` is labelled with its accepted runs over its runs,
+and the runs whose checks failed (rings crossed, non-finite values): those are shown as
+failed, never drawn as data.
 
 Only runs with status ok enter, with --accept unconverged those too (the others are counted
 in the titles). Writes a PNG (default DIR/<kind>.png) and the numbers drawn as a CSV beside it.
@@ -84,6 +87,21 @@ def ensemble(rows, keys, quantity):
     return out
 
 
+def run_counts(rows, keys):
+    """{values of keys: (accepted runs, all runs, runs whose checks failed)}: what each tile
+    or point of a figure stands on, failed runs shown as such rather than left out silently."""
+    counts = {}
+    for r in rows:
+        key = tuple(number(r[k]) for k in keys)
+        ok, total, failed = counts.get(key, (0, 0, 0))
+        counts[key] = (ok + (r["status"] in ACCEPT), total + 1, failed + (r["status"] == "failed"))
+    return counts
+
+
+def count_label(ok, total, failed):
+    return f"{ok}/{total}" + (f"\n{failed} failed" if failed else "")
+
+
 def tile_edges(values):
     """Edges around sorted positive grid values: geometric midpoints, mirrored at the ends."""
     v = np.log(np.asarray(values, float))
@@ -126,8 +144,13 @@ def heatmaps(args, rows):
         for mark in args.mark:
             x, y = (float(v) for v in mark.split(","))
             ax.plot(x, y, "o", mfc="none", mec="red", ms=12, mew=2)
+        for (x, y), counts in run_counts(rows, [args.x, args.y]).items():
+            if np.isfinite(x) and np.isfinite(y):
+                ax.annotate(count_label(*counts), (x, y), ha="center", va="center", fontsize=7,
+                            color="black", xytext=(0, -14), textcoords="offset points")
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "
-                 f"({excluded(rows)}); grey: no ok run or a value <= 0")
+                 f"({excluded(rows)})\ngrey: no ok run or a value <= 0; "
+                 f"per tile: ok runs / runs (and failed runs)", fontsize=10)
     return fig, ["quantity", args.x, args.y, "mean", "std", "runs"], table
 
 
@@ -185,11 +208,17 @@ def against(args, rows):
             std = np.array([s[1] for _, s in stats])
             ax.errorbar(x, mean, yerr=np.nan_to_num(std), marker="o", capsize=3, label=title)
             table += [[quantity, k[0], *s] for k, s in stats]
+        for (x,), counts in run_counts(rows, [args.x]).items():
+            if np.isfinite(x):
+                ax.annotate(count_label(*counts), (x, 0), xycoords=("data", "axes fraction"),
+                            ha="center", va="bottom", fontsize=7, xytext=(0, 3),
+                            textcoords="offset points")
         ax.set_xscale("log")
         ax.set_xlabel(args.x)
         ax.legend()
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: mean and standard deviation "
-                 f"over seeds and tissues ({excluded(rows)})")
+                 f"over seeds and tissues\n({excluded(rows)}); labels: ok runs / runs",
+                 fontsize=10)
     return fig, ["quantity", args.x, "mean", "std", "runs"], table
 
 

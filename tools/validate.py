@@ -294,15 +294,27 @@ def write_report(runs, out, quick):
                      f"{int(x['bonds'][-1])} | {x['dphi_plus'][-1]:.4f} | "
                      f"{np.max(np.abs(x['P'] / 1e-3 - 1)):.1e} | {x['failed_checks']} |")
     lines += failure_section(runs)
-    # the comparison with the published code (part D, --published) is kept as it was
+    # the ensembles of tools/sweep_report.py and the comparison with the published code (part
+    # D, --published) are kept as they were
     path = os.path.join(out, "validation.md")
     _, kept = split_published_section(path)
+    sweeps = marked_section(path, SWEEPS_BEGIN, SWEEPS_END)
     with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n" + kept)
+        f.write("\n".join(lines) + "\n" + (sweeps + "\n" if sweeps else "") + kept)
     print(f"wrote {path} and three PNGs")
 
 
 PUB_BEGIN, PUB_END = "<!-- published: tools/validate.py --published -->", "<!-- /published -->"
+SWEEPS_BEGIN, SWEEPS_END = "<!-- sweeps: tools/sweep_report.py -->", "<!-- /sweeps -->"
+
+
+def marked_section(path, begin, end):
+    """The text of path from the marker begin to the marker end (both kept), or ""."""
+    if not os.path.exists(path):
+        return ""
+    text = open(path).read()
+    start, stop = text.find(begin), text.find(end)
+    return text[start:stop + len(end)] + "\n" if 0 <= start < stop else ""
 
 
 def split_published_section(path):

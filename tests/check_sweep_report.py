@@ -1,0 +1,220 @@
+#!/usr/bin/env python3
+"""tools/sweep_report.py on sweep folders with made-up results, whose verdicts are known.
+
+    check_sweep_report.py
+
+Plans three small sweeps with tools/sweep.py (a Fig 6 one over P0, a Fig 5 one at P0 = 1e-5
+without its base point, one at P0 = 1e-4, which the Fig 6 sweep lacks), writes for each run the
+files a finished run leaves (growth table, log with fix dpoly/check lines, the marker
+`finished`, times.txt) with chosen numbers instead of running LAMMPS, and runs the report into
+a copy of a validation.md. Checks, against means and standard errors computed here:
+
+  * P0 = 5e-2 compacts: holds, from the two ok runs only; the third run of that point has a
+    ring that crosses itself (a FAILED check line) and an absurd delta_phi_plus, and must be
+    counted as failed, never averaged;
+  * P0 up to 1e-3 hardly matters: holds (the 1e-5 runs differ from the 1e-3 ones by less than
+    two standard errors);
+  * low eps_b compacts: the opposite is resolved (its runs compact less); low beta compacts:
+    not resolved (equal means);
+  * the Fig 5 sweep borrows the Fig 6 sweep's P0 = 1e-5 runs as its base point; the one at
+    P0 = 1e-4 borrows nothing and says so; one of its runs ends at the iteration limit (fix
+    dpoly/check's words in its log) and must be *unconverged*, not *failed*;
+  * the section is replaced in place: a second report leaves one section, and the text around
+    it (and a section of tools/validate.py --published) unchanged.
+Exit 77 (skipped) without python3-matplotlib, which the figures need.
+"""
+import csv
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+SWEEP = os.path.join(ROOT, "tools", "sweep.py")
+REPORT = os.path.join(ROOT, "tools", "sweep_report.py")
+TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
+problems = []
+
+# delta_phi_plus of each run, by point and seed (seed 3 of P0 = 5e-2 is the failed run)
+DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.06, 10.0],
+        "P0=1e-5": [0.0015, 0.0025, 0.0030],
+        "beta=30 eps_b=0.4": [0.0015, 0.0025, 0.0030],
+        "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002]}
+FAILED = ("P0=5e-2", "3")
+
+
+def expect(condition, message):
+    if not condition:
+        problems.append(message)
+    return condition
+
+
+def plan(scratch, name, parameters, points, fixed):
+    path = os.path.join(scratch, f"{name}.sweep")
+    with open(path, "w") as f:
+        f.write(f"name {name}\nparameters {os.path.join(ROOT, 'potentials', parameters)}\n"
+                f"set base\n" + "".join(f"point {p}\n" for p in points) +
+                f"seeds 1 2 3\ntissue {TISSUE}\nfixed {fixed}\n")
+    folder = os.path.join(scratch, name)
+    subprocess.run([sys.executable, SWEEP, "plan", path, folder], check=True,
+                   stdout=subprocess.DEVNULL)
+    return folder
+
+
+def fake_results(folder, unconverged=()):
+    """Per run the files a finished run leaves, with delta_phi_plus from DPHI; the runs of
+    unconverged ((point, seed) pairs) end on a minimum that reached the iteration limit."""
+    import json
+    for run in sorted(os.listdir(os.path.join(folder, "runs"))):
+        where = os.path.join(folder, "runs", run)
+        record = json.load(open(os.path.join(where, "run.json")))
+        point = " ".join(p for p in record["point"].split() if not p.startswith("ftol"))
+        seed = record["seed"]
+        dphi = DPHI[point][int(seed) - 1]
+        with open(os.path.join(where, "growth.N16.txt"), "w") as f:
+            f.write("# step P phi phi_patch calA z bonds dphi_plus iterations\n")
+            for step, (phi, calA) in enumerate([(0.93, 1.14), (0.70, 1.5), (0.50, 2.1)], 1):
+                f.write(f"{step} 1e-3 {phi - 0.1} {phi} {calA} 4.5 300 "
+                        f"{dphi * (step - 1) / 2} 1000\n")
+        failed = (point, seed) == FAILED
+        # fix dpoly/check's words for a tangled ring and for the iteration limit
+        problem = ("; FAILED; 1 rings cross themselves (first: cell 2)" if failed else
+                   "; FAILED; the minimizer stopped without converging (max iterations)"
+                   if (point, seed) in unconverged else "")
+        with open(os.path.join(where, "log.lammps"), "w") as f:
+            for k in range(1, 4):
+                f.write(f"fix dpoly/check: minimum {k} at step {k * 100}: force tolerance, "
+                        f"force norm 1e-11, |P - P0|/P0 1e-10" + (problem if k == 3 else "")
+                        + "\n")
+            f.write("Loop time of 2.5 on 1 procs for 100 steps with 512 atoms\n")
+        with open(os.path.join(where, "times.txt"), "w") as f:
+            f.write(f"start {1000 + int(run) * 10}\nend {1005 + int(run) * 10}\n")
+        with open(os.path.join(where, "finished"), "w") as f:
+            f.write("finished\n")
+
+
+def mean_se(values):
+    m = sum(values) / len(values)
+    sd = math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
+    return m, sd / math.sqrt(len(values))
+
+
+def line_of(text, title):
+    found = [line for line in text.splitlines() if line.startswith(f"- *{title}*")]
+    expect(len(found) == 1, f"the section has {len(found)} lines for '{title}'")
+    return found[0] if found else ""
+
+
+def check_claim(text, title, point, other, verdict, counts=None):
+    line = line_of(text, title)
+    ok = [v for s, v in enumerate(DPHI[point], 1) if (point, str(s)) != FAILED]
+    for values in (ok, DPHI[other]):
+        m, se = mean_se(values)
+        want = f"{m:.4g} +- {se:.2g} (n = {len(values)})"
+        expect(want in line, f"'{title}': expected '{want}' in: {line}")
+    m1, se1 = mean_se(ok)
+    m2, se2 = mean_se(DPHI[other])
+    score = (m1 - m2) / math.hypot(se1, se2)
+    expect(f"difference {score:+.1f} standard errors" in line,
+           f"'{title}': expected a difference of {score:+.1f} standard errors in: {line}")
+    expect(verdict in line, f"'{title}': expected '{verdict}' in: {line}")
+    if counts:
+        expect(counts in line, f"'{title}': expected '{counts}' in: {line}")
+
+
+def main():
+    os.environ["MESOPHYLL_MISSING_EXIT"] = "77"    # sweep_plot.py without matplotlib: skip
+    scratch = tempfile.mkdtemp(prefix="sweep_report_")
+    try:
+        fig6 = plan(scratch, "fig6_t", "fig6.mesophyll",
+                    ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11"],
+                    "steps 3 phi_stop 0.45")
+        fig5 = plan(scratch, "fig5_t", "fig5.mesophyll",
+                    ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
+                    "steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11")
+        fig5_other = plan(scratch, "fig5_p4", "fig5.mesophyll",
+                          ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
+                          "steps 3 phi_stop 0.45 P0 1e-4 ftol 1e-11")
+        fake_results(fig6)
+        fake_results(fig5)
+        fake_results(fig5_other, unconverged={("beta=30 eps_b=0.4", "1")})
+        doc = os.path.join(scratch, "doc", "validation.md")
+        os.makedirs(os.path.dirname(doc))
+        head = "# Validation\n\nText before the section.\n"
+        tail = "<!-- published: tools/validate.py --published -->\nkept\n<!-- /published -->\n"
+        with open(doc, "w") as f:
+            f.write(head + "\n" + tail)
+        out = os.path.join(scratch, "out")
+        command = [sys.executable, REPORT, "--fig6", fig6, "--fig5", fig5, "--out", out,
+                   "--doc", doc]
+        for attempt in (1, 2):
+            result = subprocess.run(command, capture_output=True, text=True)
+            if result.returncode == 77:
+                print(f"check_sweep_report: skipped, {result.stderr.strip()}")
+                return 77
+            expect(result.returncode == 0, f"report {attempt}: exit code {result.returncode}: "
+                                           f"{result.stdout}{result.stderr}")
+        text = open(doc).read()
+        expect(text.startswith(head), "the text before the section changed")
+        expect(text.find("<!-- sweeps") < text.find("<!-- published"),
+               "the section does not come before the published one")
+        expect(text.count("<!-- sweeps: tools/sweep_report.py -->") == 1 and
+               text.count("<!-- /sweeps -->") == 1, "not exactly one section after two reports")
+        expect(tail in text, "the published section is not kept")
+        check_claim(text, "P0 = 5e-2 compacts", "P0=5e-2", "P0=1e-3", "**holds**",
+                    "[2 ok, 1 failed]")
+        check_claim(text, "low eps_b compacts", "beta=100 eps_b=0.01", "P0=1e-5",
+                    "the opposite is resolved")
+        check_claim(text, "low beta compacts", "beta=30 eps_b=0.4", "P0=1e-5",
+                    "cannot be told at this resolution")
+        unchanged = line_of(text, "P0 up to 1e-3 hardly matters")
+        expect("**holds**" in unchanged, f"P0 up to 1e-3: not 'holds': {unchanged}")
+        expect("fig5_t's base point" in text and "fig6_t's P0 = 1e-05 point" in text,
+               "the Fig 5 sweep did not borrow the Fig 6 sweep's P0 = 1e-5 runs")
+        for name in ("fig6_t_against.png", "fig6_t_curves.png", "fig5_t_heatmaps.png",
+                     "fig5_t_summary.csv", "fig6_t_points.csv"):
+            expect(os.path.exists(os.path.join(out, name)), f"{name} was not written")
+        # the failed run is in the summary as failed, and not in the figure's numbers
+        against = open(os.path.join(out, "fig6_t_against.csv")).read()
+        m, _ = mean_se(DPHI["P0=5e-2"][:2])
+        expect(re.search(rf"delta_phi_plus,0\.05,{m:.3f}", against) is not None,
+               f"fig6_t_against.csv: the mean delta_phi_plus at 5e-2 is not {m:.3f}: {against}")
+        # a sweep at a pressure the Fig 6 sweep lacks borrows nothing
+        result = subprocess.run([sys.executable, REPORT, "--fig6", fig6, "--fig5", fig5_other,
+                                 "--out", out, "--doc", doc], capture_output=True, text=True)
+        text = open(doc).read()
+        expect(result.returncode == 0 and "has no P0 = 0.0001" in text,
+               "the P0 = 1e-4 sweep: no message that the Fig 6 sweep lacks its pressure")
+        expect("not run (fig5_p4 has no point beta = 100, eps_b = 0.4)" in text,
+               "the P0 = 1e-4 sweep: its low-beta line does not say the base is missing")
+        # a run stopped by the iteration limit is unconverged (not failed): tools/sweep.py
+        # summary must read fix dpoly/check's words
+        statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_other,
+                                                                          "summary.csv")))]
+        expect(statuses.count("unconverged") == 1 and statuses.count("failed") == 0,
+               f"fig5_p4: one run at the iteration limit gives statuses {statuses}, not one "
+               f"unconverged")
+        # bad input: no folder, a folder without runs
+        for args in ([], ["--fig6", scratch]):
+            result = subprocess.run([sys.executable, REPORT] + args, capture_output=True,
+                                    text=True)
+            expect(result.returncode != 0 and "error" in result.stderr,
+                   f"sweep_report {' '.join(args)}: exit code {result.returncode}, "
+                   f"{result.stderr.strip()}")
+    finally:
+        if os.environ.get("SWEEP_KEEP"):
+            print(f"kept {scratch}")
+        else:
+            shutil.rmtree(scratch, ignore_errors=True)
+    for p in problems:
+        print("FAILED:", p)
+    print(f"check_sweep_report: {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

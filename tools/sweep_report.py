@@ -1,0 +1,487 @@
+#!/usr/bin/env python3
+"""The paper's sensitivity study from sweep folders: figures, CSVs and a section of
+doc/validation.md with a verdict on each direction the paper states.
+
+    tools/sweep_report.py [--fig4 DIR] [--fig5 DIR] [--fig6 DIR] [--out validation/sweeps]
+                          [--doc doc/validation.md] [--accept unconverged]
+
+Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
+partly run) with examples/sweep/in.sweep. For each: `tools/sweep.py summary DIR`, its
+summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, the figures of
+tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's highlighted points
+ringed and ensemble calA curves of those points; Fig 6: delta_A and delta_phi_plus against P0
+and the calA curves), and what the sweep cost (runs, loop seconds, wall time). Then the
+section between SECTION_BEGIN and SECTION_END of --doc is replaced (appended the first time):
+per direction of the paper, the ensemble means, their standard errors, and the verdict by the
+rule of compare() below. Nothing in the section is typed by hand; a sweep left out or not
+run yields "not run". Needs python3-numpy and python3-matplotlib (for the figures).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import sweep  # noqa: E402  (the parameter-file reader)
+
+SWEEP = os.path.join(ROOT, "tools", "sweep.py")
+PLOT = os.path.join(ROOT, "tools", "sweep_plot.py")
+SECTION_BEGIN = "<!-- sweeps: tools/sweep_report.py -->"
+SECTION_END = "<!-- /sweeps -->"
+PUBLISHED_BEGIN = "<!-- published: tools/validate.py --published -->"
+# a difference counts as resolved when it exceeds this many standard errors of the difference
+RESOLVED = 2.0
+# z near phi_patch = 0.5 compares two points only where both came this close to 0.5
+NEAR_HALF = 0.05
+# the captions' highlighted points: Fig 4 (lambda, delta_a), Fig 5 (beta, eps_b)
+HIGHLIGHTED = {"fig4": ("lambda", "delta_a", [(1.5, 0.1), (2, 0.002), (5, 0.01), (5, 0.5)]),
+               "fig5": ("beta", "eps_b", [(70, 0.1), (30, 0.01), (300, 0.03), (200, 0.6)])}
+# the figures' base point (the default of the parameters each figure varies)
+BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.4},
+        "fig6": {"P0": 1e-3}}
+# The three figures' base sets differ in P0 only: a Fig 4 or 5 sweep run at a pressure of the
+# Fig 6 sweep may leave its base point out and borrow those runs (borrow_base checks it).
+BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set")
+
+
+# --- ensembles and the comparison rule ----------------------------------------------------------
+
+class Ensemble:
+    """The runs of one grid point: how many of each status, and the statistics of a quantity
+    over the accepted ones (mean, sample standard deviation, standard error of the mean)."""
+
+    def __init__(self, rows, accept):
+        self.rows = rows
+        self.accepted = [r for r in rows if r["status"] in accept]
+        self.counts = {}
+        for r in rows:
+            self.counts[r["status"]] = self.counts.get(r["status"], 0) + 1
+
+    def values(self, quantity):
+        out = []
+        for r in self.accepted:
+            try:
+                v = float(r[quantity])
+            except (KeyError, ValueError):
+                continue
+            if math.isfinite(v):
+                out.append(v)
+        return out
+
+    def stats(self, quantity):
+        """(mean, sd, standard error, n); None for what n does not define."""
+        v = self.values(quantity)
+        n = len(v)
+        if n == 0:
+            return None, None, None, 0
+        mean = sum(v) / n
+        if n == 1:
+            return mean, None, None, 1
+        sd = math.sqrt(sum((x - mean) ** 2 for x in v) / (n - 1))
+        return mean, sd, sd / math.sqrt(n), n
+
+    def status_text(self):
+        order = ("ok", "unconverged", "failed", "error", "unfinished")
+        return ", ".join(f"{self.counts[s]} {s}" for s in order if self.counts.get(s))
+
+
+def compare(a, b, quantity, sign):
+    """Is quantity larger (sign +1) or smaller (sign -1) at ensemble a than at b? 'holds' when
+    the difference of the means, in the stated direction, exceeds RESOLVED standard errors of
+    the difference (the two standard errors added in quadrature); 'opposite' when it does so
+    against it; 'not resolved' in between; 'equal' when every run of both has the same value;
+    'too few runs' below two accepted runs either side.
+    Returns (verdict, mean_a, se_a, n_a, mean_b, se_b, n_b, difference / its standard error)."""
+    ma, _, sa, na = a.stats(quantity)
+    mb, _, sb, nb = b.stats(quantity)
+    if na < 2 or nb < 2:
+        return "too few runs", ma, sa, na, mb, sb, nb, None
+    se = math.hypot(sa, sb)
+    diff = sign * (ma - mb)
+    if se == 0 and diff == 0:    # every run of both gives one value: no spread to resolve
+        return "equal", ma, sa, na, mb, sb, nb, 0.0
+    score = diff / se if se > 0 else (math.inf if diff > 0 else -math.inf)
+    verdict = "holds" if score > RESOLVED else "opposite" if score < -RESOLVED else "not resolved"
+    return verdict, ma, sa, na, mb, sb, nb, score
+
+
+def same_value(text, value):
+    try:
+        return math.isclose(float(text), float(value), rel_tol=1e-9)
+    except (TypeError, ValueError):
+        return False
+
+
+def ensemble_at(rows, values, accept):
+    """The Ensemble of the runs whose grid values are `values` ({axis: number}); None when
+    the sweep has no such point."""
+    chosen = [r for r in rows if all(same_value(r.get(k), v) for k, v in values.items())]
+    return Ensemble(chosen, accept) if chosen else None
+
+
+# --- one sweep folder ----------------------------------------------------------------------------
+
+def run_tool(command):
+    result = subprocess.run([sys.executable] + command, capture_output=True, text=True)
+    missing = os.environ.get("MESOPHYLL_MISSING_EXIT")    # the tests' skip code (77)
+    if missing and result.returncode == int(missing):
+        print(result.stderr, end="", file=sys.stderr)
+        sys.exit(result.returncode)    # a Debian package is missing: say so, skip
+    if result.returncode:
+        sys.exit(f"sweep_report: {' '.join(command)} failed:\n{result.stdout}{result.stderr}")
+    return result.stdout
+
+
+def sweep_cost(rows):
+    """(loop seconds of all attempts, wall seconds of the finishing attempts, runs finished
+    with a wall time) of a sweep's summary rows. The wall seconds add the partitions' busy
+    time, so pauses of the sweep do not count."""
+    loop = sum(float(r["loop_s"] or 0) for r in rows)
+    walls = [float(r["wall_s"]) for r in rows if r["wall_s"] not in ("", None)]
+    return loop, sum(walls), len(walls)
+
+
+class Sweep:
+    """A summarized sweep folder and the figures drawn from it."""
+
+    def __init__(self, kind, folder, out, accept):
+        self.kind, self.folder, self.out, self.accept = kind, folder, out, accept
+        extra = [a for k in accept if k != "ok" for a in ("--accept", k)]
+        run_tool([SWEEP, "summary", folder] + extra)
+        self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
+        self.name = os.path.basename(os.path.abspath(folder))
+        for table in ("summary", "points"):
+            shutil.copy(os.path.join(folder, f"{table}.csv"),
+                        os.path.join(out, f"{self.name}_{table}.csv"))
+        self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
+        self.figures = []
+        self.draw(extra)
+
+    def plot(self, what, args, extra):
+        png = os.path.join(self.out, f"{self.name}_{what}.png")
+        run_tool([PLOT, what, self.folder, "-o", png] + args + extra)
+        self.figures.append(png)
+
+    def draw(self, extra):
+        if not any(r["status"] in self.accept for r in self.rows):
+            return    # nothing to draw: the section says so
+        if self.kind in HIGHLIGHTED:
+            x, y, marks = HIGHLIGHTED[self.kind]
+            if {x, y} <= set(self.rows[0]):
+                self.plot("heatmaps", ["--x", x, "--y", y] +
+                          [a for m in marks for a in ("--mark", f"{m[0]},{m[1]}")], extra)
+            # the curves of every point with an accepted run (the reduced grids hold the
+            # highlighted points and few others)
+            chosen = [p for p in dict.fromkeys(r["point"] for r in self.rows)
+                      if any(r["point"] == p and r["status"] in self.accept for r in self.rows)]
+            self.plot("curves", [a for p in chosen for a in ("--point", p)], extra)
+        else:
+            self.plot("against", ["--x", "P0"], extra)
+            self.plot("curves", [], extra)
+
+    def at(self, **values):
+        found = ensemble_at(self.rows, values, self.accept)
+        if found is None and self.borrowed and values == BASE[self.kind]:
+            return self.borrowed[1]
+        return found
+
+    def points(self):
+        """[(label, Ensemble)] in the order of the plan, a borrowed base point first."""
+        labels = list(dict.fromkeys(r["point"] for r in self.rows))
+        own = [(p, Ensemble([r for r in self.rows if r["point"] == p], self.accept))
+               for p in labels]
+        return ([self.borrowed] if self.borrowed else []) + own
+
+    borrowed = None    # (label, Ensemble) of a base point taken from the Fig 6 sweep
+
+    def run_record(self, row):
+        return json.load(open(os.path.join(self.folder, "runs", row["run"], "run.json")))
+
+    def borrow_base(self, fig6):
+        """Take the base point from the Fig 6 sweep where this sweep lacks it and runs at one of
+        its pressures: allowed only when the base parameter sets agree apart from P0, and the
+        runs agree in every variable of BORROW_RUN_VARIABLES and in seeds and tissues.
+        Returns a sentence saying what was borrowed, or why not (None: nothing to borrow)."""
+        if ensemble_at(self.rows, BASE[self.kind], self.accept) is not None or fig6 is None:
+            return None
+        mine, theirs = self.run_record(self.rows[0]), fig6.run_record(fig6.rows[0])
+        sets = [sweep.parameter_sets(os.path.join(s.folder, "runs", s.rows[0]["run"],
+                                                  r["variables"]["parameters"]))
+                [r["variables"]["set"]] for s, r in ((self, mine), (fig6, theirs))]
+        for s in sets:
+            s.pop("P0", None)
+        if sets[0] != sets[1]:
+            return (f"{self.name} has no base point, and the base set of its parameter file "
+                    f"differs from {fig6.name}'s beyond P0: none borrowed.")
+        p0 = float(mine["variables"]["P0"])
+        rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
+        if not rows:
+            return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
+        differ = [name for name in BORROW_RUN_VARIABLES
+                  if mine["variables"].get(name) != fig6.run_record(rows[0])["variables"]
+                  .get(name)]
+        seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
+        if differ or seeds_tissues(rows) != seeds_tissues(
+                [r for r in self.rows if r["point"] == self.rows[0]["point"]]):
+            return (f"{self.name} has no base point; {fig6.name}'s P0 = {p0:g} runs differ in "
+                    f"{', '.join(differ) or 'seeds or tissues'}: none borrowed.")
+        label = f"base ({fig6.name}, P0={p0:g})"
+        self.borrowed = (label, Ensemble(rows, self.accept))
+        return (f"{self.name}'s base point {BASE[self.kind]} is {fig6.name}'s P0 = {p0:g} point "
+                f"(the same parameter set apart from P0, pressure, force tolerance, seeds and "
+                f"tissues; its runs stop at {fig6.run_record(rows[0])['variables'].get('steps')} "
+                f"steps or phi_patch 0.45); it is not a tile of the heatmap.")
+
+
+# --- the section ---------------------------------------------------------------------------------
+
+def fmt(x, spec=".3g"):
+    return "-" if x is None else format(x, spec)
+
+
+def mean_se(m, s, n):
+    return "-" if m is None else f"{m:{'.4g'}} +- {fmt(s, '.2g')} (n = {n})"
+
+
+def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
+    """One direction as a markdown bullet: the two ensembles, the difference in standard
+    errors, the verdict."""
+    if sweep is None:
+        return f"- *{title}*: not run (no sweep folder given)."
+    a, b = sweep.at(**a_values), sweep.at(**b_values)
+    name = lambda v: ", ".join(f"{k} = {x:g}" for k, x in v.items())  # noqa: E731
+    if a is None or b is None:
+        missing = name(a_values) if a is None else name(b_values)
+        return f"- *{title}*: not run ({sweep.name} has no point {missing})."
+    verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, sign)
+    far = [p for p in (a, b) if p.stats("phi_half")[0] is not None
+           and abs(p.stats("phi_half")[0] - 0.5) > NEAR_HALF]
+    if quantity == "z_half" and far and verdict != "too few runs":
+        verdict = "not near 0.5"
+    text = {"holds": "**holds**", "opposite": "**does not hold: the opposite is resolved**",
+            "not resolved": f"**cannot be told at this resolution** (difference below "
+                            f"{RESOLVED:g} standard errors)",
+            "equal": f"**does not hold**: every run of both gives {fmt(ma, 'g')}",
+            "not near 0.5": f"**cannot be told**: the runs of a point ended before phi_patch "
+                            f"came within {NEAR_HALF:g} of 0.5, so z is compared at different "
+                            f"stages",
+            "too few runs": "**cannot be told: fewer than two accepted runs**"}[verdict]
+    return (f"- *{title}* ({quantity}; {sweep.name}): {mean_se(ma, sa, na)} at {name(a_values)} "
+            f"[{a.status_text()}] against {mean_se(mb, sb, nb)} at {name(b_values)} "
+            f"[{b.status_text()}]; difference {fmt(score, '+.1f')} standard errors: {text}. "
+            f"Where the runs ended: {name(a_values)}: {reach_note(a)}; {name(b_values)}: "
+            f"{reach_note(b)}."
+            + (f" {note}" if note else ""))
+
+
+def reach_note(e):
+    """Where the accepted runs of a point ended: mean growth steps and final phi_patch, and
+    phi_patch at the step nearest 0.5 (where z_half is taken)."""
+    if not e.accepted:
+        return "no accepted run"
+    steps, phi_final, phi_half = (e.stats(q)[0] for q in ("steps", "phi_final", "phi_half"))
+    return (f"{steps:.1f} minima recorded (the first before growth), phi_patch "
+            f"{phi_final:.3f} (nearest 0.5: {phi_half:.3f})")
+
+
+def unchanged_lines(sweep, values_list, reference):
+    """'P0 up to 1e-3 hardly matters': each lower pressure against the reference one, for each
+    quantity of the figure; holds where no difference is resolved."""
+    if sweep is None:
+        return ["- *P0 up to 1e-3 hardly matters*: not run (no Fig 6 sweep folder given)."]
+    b = sweep.at(**reference)
+    lines, resolved, compared = [], 0, 0
+    for values in values_list:
+        a = sweep.at(**values)
+        if a is None or b is None:
+            continue
+        for quantity in ("delta_A_early", "delta_A_late", "delta_phi_plus", "z_half"):
+            verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, +1)
+            if verdict == "too few runs":
+                continue
+            compared += 1
+            resolved += verdict not in ("not resolved", "equal")
+            lines.append(f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} "
+                         f"against {mean_se(mb, sb, nb)} at {reference['P0']:g}: difference "
+                         f"{fmt(score, '+.1f')} standard errors")
+    if not compared:
+        return ["- *P0 up to 1e-3 hardly matters*: cannot be told (no two pressures at or "
+                "below 1e-3 with two accepted runs each)."]
+    verdict = ("**holds**: no difference resolved" if not resolved else
+               f"**does not hold**: {resolved} of {compared} differences resolved")
+    return [f"- *P0 up to 1e-3 hardly matters* ({sweep.name}): {verdict} (differences counted "
+            f"as resolved above {RESOLVED:g} standard errors):"] + lines
+
+
+def optimal_lines(sweeps):
+    """'the default is near-optimal in delta_A': per sweep, the base point's delta_A against
+    every other point; holds where no point is lower by a resolved difference."""
+    lines = []
+    for kind in ("fig4", "fig5", "fig6"):
+        sweep = sweeps.get(kind)
+        if sweep is None:
+            continue
+        base = sweep.at(**BASE[kind])
+        if base is None:
+            lines.append(f"  - {sweep.name}: no base point ({BASE[kind]}).")
+            continue
+        for quantity in ("delta_A_early", "delta_A_late"):
+            better, ranks = [], []
+            mb = base.stats(quantity)[0]
+            for label, e in sweep.points():
+                m = e.stats(quantity)[0]
+                if m is None or mb is None:
+                    continue
+                ranks.append(m)
+                if compare(e, base, quantity, -1)[0] == "holds":
+                    better.append(f"{label} ({m:.3g})")
+            if mb is None:
+                lines.append(f"  - {sweep.name}, {quantity}: the base point has no accepted run.")
+                continue
+            if len(ranks) < 2:
+                lines.append(f"  - {sweep.name}, {quantity}: cannot be told (no point beside "
+                             f"the base with an accepted run).")
+                continue
+            rank = 1 + sum(m < mb for m in ranks)
+            m, _, se, n = base.stats(quantity)
+            lines.append(f"  - {sweep.name}, {quantity}: base {mean_se(m, se, n)}, "
+                         f"rank {rank} of {len(ranks)} points; "
+                         + ("**holds** (no point resolved lower)" if not better else
+                            "**does not hold**: resolved lower at " + ", ".join(better)))
+    if not lines:
+        return ["- *the default is near-optimal in delta_A*: not run."]
+    return ["- *the default is near-optimal in delta_A* (the base point of each sweep against "
+            "its other points; lower is closer to the reference points):"] + lines
+
+
+def points_table(sweep):
+    lines = [f"| point | runs | delta_A early | delta_A late | delta_phi_plus | z near 0.5 "
+             f"(at phi_patch) | phi_patch end |", "| --- | --- | --- | --- | --- | --- | --- |"]
+    for label, e in sweep.points():
+        def cell(quantity):
+            m, _, se, n = e.stats(quantity)
+            return mean_se(m, se, n)
+        z, phi = e.stats("z_half"), e.stats("phi_half")
+        lines.append(f"| {label} | {e.status_text()} | {cell('delta_A_early')} | "
+                     f"{cell('delta_A_late')} | {cell('delta_phi_plus')} | "
+                     f"{fmt(z[0], '.3g')} ({fmt(phi[0], '.3f')}) | "
+                     f"{fmt(e.stats('phi_final')[0], '.3f')} |")
+    return lines
+
+
+def section(sweeps, doc_dir, command, notes):
+    rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
+    lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
+             f"Made by `{command}` from the sweep folders of `examples/sweep/fig4_coarse.sweep`, "
+             "`fig5_coarse.sweep` and `fig6_coarse.sweep` (reduced grids of `fig4.sweep`, "
+             "`fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
+             "and why it is reduced). Every run has vertex insertion (the example's default). "
+             "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
+             "`tools/sweep.py summary`: only *ok* runs enter the means; a *failed* run (rings "
+             "that cross themselves or are inverted, non-finite values) is counted, never "
+             "averaged. Means are over the seeds and initial tissues of each point (below); "
+             "+- is the standard error of the mean (sample SD / sqrt(n)). delta_A is against "
+             "the three points of the paper's text (`examples/sweep/reference_paper_text.txt`), "
+             "not the paper's nine measured points. This section supersedes the two-seed "
+             "section \"Sensitivity\" above for the paper's directions.", "",
+             f"Verdict rule: a direction **holds** where the difference of the two ensemble "
+             f"means, in the stated direction, exceeds {RESOLVED:g} standard errors of the "
+             f"difference; it **cannot be told at this resolution** where it is smaller; "
+             f"**the opposite is resolved** where it exceeds {RESOLVED:g} against it.", ""]
+    lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
+    f4, f5, f6 = sweeps.get("fig4"), sweeps.get("fig5"), sweeps.get("fig6")
+    lines.append(claim_line("low beta compacts", f5, {"beta": 30, "eps_b": 0.4},
+                            BASE["fig5"], "delta_phi_plus", +1))
+    lines.append(claim_line("low eps_b compacts", f5, {"beta": 100, "eps_b": 0.01},
+                            BASE["fig5"], "delta_phi_plus", +1))
+    lines.append(claim_line("low beta with low eps_b (the highlighted (30, 0.01)) compacts", f5,
+                            {"beta": 30, "eps_b": 0.01}, BASE["fig5"], "delta_phi_plus", +1))
+    lines.append(claim_line("delta_a = 0.01 with lambda = 5 compacts", f4,
+                            {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus", +1))
+    lines.append(claim_line("few contacts at small delta_a", f4, {"lambda": 5, "delta_a": 0.01},
+                            BASE["fig4"], "z_half", -1))
+    lines += unchanged_lines(f6, [{"P0": 1e-5}, {"P0": 1e-4}], BASE["fig6"])
+    lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
+                            "delta_phi_plus", +1))
+    lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
+                            "calA_final", +1, "calA_final: mean calA at the run's last step."))
+    lines += optimal_lines(sweeps)
+    lines += ["", "### Per grid point, and what each figure cost", ""]
+    for kind in ("fig6", "fig5", "fig4"):
+        sweep = sweeps.get(kind)
+        if sweep is None:
+            continue
+        runs = len(sweep.rows)
+        done = sum(r["status"] != "unfinished" for r in sweep.rows)
+        rate = (f"; {sweep.timed / (sweep.wall_s / 3600):.0f} runs per partition-hour"
+                if sweep.wall_s else "")
+        seeds = sorted({r["seed"] for r in sweep.rows}, key=int)
+        tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
+        lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
+                  f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
+                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts), "
+                  f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
+                  f"attempts of {sweep.timed} run{'s' if sweep.timed != 1 else ''}{rate}; "
+                  f"on a shared machine wall times "
+                  f"depend on the other jobs).", ""]
+        lines += points_table(sweep) + [""]
+        lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] or \
+            ["No figure: no run of this sweep has an accepted status."]
+        lines.append("")
+    lines.append(SECTION_END)
+    return "\n".join(lines) + "\n"
+
+
+def write_section(doc, text):
+    """Replace the section between the markers in doc; the first time, put it before the
+    section of tools/validate.py --published, or at the end."""
+    old = open(doc).read() if os.path.exists(doc) else ""
+    start, end = old.find(SECTION_BEGIN), old.find(SECTION_END)
+    published = old.find(PUBLISHED_BEGIN)
+    if start >= 0 and end > start:
+        new = old[:start] + text + old[end + len(SECTION_END):].lstrip("\n")
+    elif published >= 0:
+        new = old[:published] + text + "\n" + old[published:]
+    else:
+        new = old.rstrip("\n") + "\n\n" + text
+    with open(doc, "w") as f:
+        f.write(new)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    for kind in ("fig4", "fig5", "fig6"):
+        p.add_argument(f"--{kind}", metavar="DIR", help=f"sweep folder of {kind}*.sweep")
+    p.add_argument("--out", default=os.path.join(ROOT, "validation", "sweeps"))
+    p.add_argument("--doc", default=os.path.join(ROOT, "doc", "validation.md"))
+    p.add_argument("--accept", action="append", default=["ok"], choices=["unconverged"],
+                   help="also average runs of this status (default: ok only)")
+    args = p.parse_args()
+    given = {k: getattr(args, k) for k in ("fig4", "fig5", "fig6") if getattr(args, k)}
+    if not given:
+        p.error("give at least one sweep folder (--fig4, --fig5, --fig6)")
+    for kind, folder in given.items():
+        if not os.path.isdir(os.path.join(folder, "runs")):
+            p.error(f"--{kind} {folder}: no runs/ folder there (plan and run the sweep first)")
+    os.makedirs(args.out, exist_ok=True)
+    started = time.time()
+    sweeps = {k: Sweep(k, folder, args.out, set(args.accept)) for k, folder in given.items()}
+    notes = [s.borrow_base(sweeps.get("fig6")) for k, s in sweeps.items() if k != "fig6"]
+    def shown(folder):    # as typed from the package's folder, where it lies inside
+        path = os.path.abspath(folder)
+        return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
+    command = "tools/sweep_report.py " + " ".join(f"--{k} {shown(f)}" for k, f in given.items())
+    write_section(args.doc, section(sweeps, os.path.dirname(os.path.abspath(args.doc)),
+                                    command, [n for n in notes if n]))
+    print(f"wrote {args.doc} (section {SECTION_BEGIN}) and {len(sweeps)} sweeps' CSVs and PNGs "
+          f"in {args.out} ({time.time() - started:.0f} s)")
+
+
+if __name__ == "__main__":
+    main()
