@@ -45,6 +45,7 @@ TEST(Check, ConvergedMinimumAtTargetPressurePasses)
   EXPECT_EQ(s->thermo("f_check[4]"), 0.0);
   EXPECT_EQ(s->thermo("f_check[5]"), 0.0);
   EXPECT_LT(s->thermo("f_check[2]"), 1.0e-8);
+  EXPECT_EQ(s->thermo("f_check[8]"), 0.0) << "touching cells do not interpenetrate";
 }
 
 TEST(Check, WrongPressureIsReported)
