@@ -15,18 +15,23 @@ difference of two whole runs with and without the check is lost in the setup's n
 costs. For scale, the time of one force evaluation of the same tissue (a run of 20 steps without
 an integrator, LAMMPS's loop time). One MPI rank: every rank does the same check on the gathered
 vertices. Writes check_cost.csv and check_cost.png under --out and prints the table. Needs
-linux-perf (Debian) with perf_event_paranoid <= 2 and python3-matplotlib.
+linux-perf (Debian) with perf_event_paranoid <= 2 and python3-matplotlib; tools/setup.sh installs
+neither perf nor any other profiler (only this benchmark uses it), so the script checks for perf
+first and stops with the package to install.
 """
 import argparse
 import csv
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
 
-import matplotlib
-
+try:
+    import matplotlib
+except ImportError:
+    sys.exit("check_cost: needs matplotlib (Debian: apt-get install python3-matplotlib)")
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -70,6 +75,25 @@ FUNCTIONS = {"check_ms": "FixDPolyCheck::check",
              "self_crossing_ms": "FixDPolyCheck::tangled_cells"}
 
 
+def require_perf(workdir):
+    """Stop with what to install or set when perf cannot sample here."""
+    if shutil.which("perf") is None:
+        sys.exit("check_cost: needs perf, which is not on PATH: install the Debian package "
+                 "linux-perf (apt-get install linux-perf); tools/setup.sh does not")
+    paranoid = "/proc/sys/kernel/perf_event_paranoid"
+    if os.path.exists(paranoid):
+        with open(paranoid) as f:
+            level = int(f.read())
+        if level > 2:
+            sys.exit(f"check_cost: perf may not sample here: kernel.perf_event_paranoid is {level}, "
+                     "needs <= 2 (sysctl kernel.perf_event_paranoid=2, as root)")
+    probe = subprocess.run(["perf", "record", "-q", "-o", os.path.join(workdir, "probe.data"),
+                            "--", "true"], capture_output=True, text=True)
+    if probe.returncode != 0:
+        sys.exit("check_cost: perf record fails here (exit code "
+                 f"{probe.returncode}): {(probe.stderr or probe.stdout).strip()[:500]}")
+
+
 def check_ms(lmp, data, minima, workdir):
     """{column: CPU ms per check} from perf samples of minima minimizations with the check."""
     path = os.path.join(workdir, "in.minima")
@@ -90,6 +114,9 @@ def check_ms(lmp, data, minima, workdir):
         share = [float(m.group(1)) for m in re.finditer(
             r"^\s+([0-9.]+)%\s+[0-9.]+%\s+\[\.\] LAMMPS_NS::" + re.escape(function) + r"(?=\s)",
             report, re.M)]
+        if not share and column == "check_ms":
+            sys.exit(f"check_cost: no perf samples in {function} of {lmp}: a build without "
+                     "symbols, or a check that did not run")
         result[column] = sum(share) / 100 * total_ns / 1e6 / minima
     os.remove(samples)
     return result
@@ -115,6 +142,7 @@ def main():
 
     rows = []
     with tempfile.TemporaryDirectory() as work:
+        require_perf(work)
         for cells in args.cells:
             data = tissue(cells, work)
             # as many checks at every size as --minima at 1024 cells: enough samples
