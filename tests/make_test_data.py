@@ -12,10 +12,11 @@ configs = {
                       "--shift", "0.3", "--spacing", "1.1"],
     # one regular ring: analytic energies and relaxation
     "single.data": ["--cells", "1", "--vertices", "16", "--spacing", "3.0"],
-    # overlapping cells for adhesion and breaking, in order and shuffled; one ring for contacts
-    "overlapping.data": ["--cells", "9", "--vertices", "16", "--spacing", "0.97", "--jitter",
+    # touching cells whose vertex disks overlap, for adhesion and breaking, in order and shuffled
+    # (spacing above 1 + jitter: the outlines do not cross); one ring for contacts
+    "overlapping.data": ["--cells", "9", "--vertices", "16", "--spacing", "1.03", "--jitter",
                          "0.02", "--seed", "5", "--shift", "0.2", "--bond-types", "2"],
-    "overlapping_shuffled.data": ["--cells", "9", "--vertices", "16", "--spacing", "0.97",
+    "overlapping_shuffled.data": ["--cells", "9", "--vertices", "16", "--spacing", "1.03",
                                   "--jitter", "0.02", "--seed", "5", "--shift", "0.2",
                                   "--bond-types", "2", "--shuffle", "11"],
     "single_contacts.data": ["--cells", "1", "--vertices", "16", "--spacing", "3.0",

@@ -8,7 +8,9 @@
 
 The reference is examples/NAME/log.<date>.<X>.g++.<N> (the newest, if several). Every thermo
 row of every run must match column by column within |new - ref| <= atol + rtol*|ref|, with the
-same columns and rows; --tolerance sets a column's own pair. --update runs the example and writes
+same columns and rows; --tolerance sets a column's own pair. A minimum that fix dpoly/check
+fails where the reference's passed is a difference too (the check may learn to see more than
+when the reference was written). --update runs the example and writes
 a new reference log instead. --var passes a variable to LAMMPS; with --expect-difference the
 check passes only if the run differs from the reference (to show that a moved trajectory is
 caught). With N > 1 the command is CMD FLAG N PREFLAGS lmp POSTFLAGS ..., the order of CMake's
@@ -19,6 +21,7 @@ left as it is. Standard library only.
 import argparse
 import glob
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -47,6 +50,15 @@ def thermo_blocks(path):
     return blocks
 
 
+FAILED_CHECK = re.compile(r"^fix dpoly/check: minimum (\d+) at step \d+: .*?; FAILED; (.*)$", re.M)
+
+
+def failed_checks(path):
+    """{minimum: problems} of the fix dpoly/check lines of a log that report a failure."""
+    with open(path, errors="replace") as log:
+        return {int(m.group(1)): m.group(2) for m in FAILED_CHECK.finditer(log.read())}
+
+
 def compare(reference, new, rtol, atol, per_column=None):
     """Return a list of differences, empty if the logs agree. per_column: {name: (rtol, atol)}."""
     per_column = per_column or {}
@@ -66,6 +78,11 @@ def compare(reference, new, rtol, atol, per_column=None):
                 if abs(val - ref) > col_atol + col_rtol * abs(ref):
                     problems.append(f"table {b} step {int(ref_row[0])} {col}: {val!r} vs "
                                     f"reference {ref!r}")
+    passed_before = failed_checks(reference)
+    for minimum, text in sorted(failed_checks(new).items()):
+        if minimum not in passed_before:
+            problems.append(f"fix dpoly/check failed minimum {minimum} ({text}), which passed in "
+                            "the reference")
     return problems
 
 

@@ -45,6 +45,7 @@ MAXITER = {"paper": 20000}    # the paper's rules do not converge (see the repor
 FTOL = {"low_pressure": 1e-13}    # |P - P0| must resolve P0 = 1e-7
 P0 = {"low_pressure": 1e-7, "high_pressure": 5e-2}    # the others: 1e-3
 KINDS = [("cross themselves", "rings cross themselves"),
+         ("interpenetrate", "cells interpenetrate"),
          ("max iterations", "minimizer stopped at max iterations"),
          ("|P - P0|/P0 =", "P off P0 by more than 1e-6")]
 

@@ -10,6 +10,7 @@
 #include "compute.h"
 #include "domain.h"
 #include "dpoly_measure.h"
+#include "dpoly_overlap.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -50,6 +51,11 @@ class FixDPolyCheck::UnwrappedVertices {
     for (const auto &p : all) by_tag[p.tag] = &p;
   }
   const RingPoint &at(tagint tag) const { return *by_tag.at(tag); }
+  DPoly::Point point(tagint tag) const
+  {
+    const RingPoint &p = at(tag);
+    return {p.x, p.y};
+  }
 
  private:
   std::vector<RingPoint> all;
@@ -57,8 +63,8 @@ class FixDPolyCheck::UnwrappedVertices {
 };
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, CHECK, 7), target_pressure(0.0), pressure_tolerance(1.0e-6),
-    stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
+    FixDPolyStage(lmp, narg, arg, CHECK, 8), target_pressure(0.0), pressure_tolerance(1.0e-6),
+    stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
 {
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
     if (strcmp(key, "pressure") == 0) {
@@ -119,6 +125,7 @@ int FixDPolyCheck::check()
   tagint first_tangled = 0;
   const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
   const int tangled = tangled_cells(vertices, first_tangled);
+  const DPoly::Interpenetration overlapping = interpenetrating_cells(vertices);
   const std::string geometry = geometry_problems(vertices);
 
   last[0] = converged ? 1.0 : 0.0;
@@ -128,6 +135,7 @@ int FixDPolyCheck::check()
   last[4] = tangled;
   last[5] = min->niter;
   last[6] = min->neval;
+  last[7] = overlapping.pairs;
 
   std::string problems;
   if (!std::isfinite(energy) || !std::isfinite(force_norm))
@@ -145,6 +153,13 @@ int FixDPolyCheck::check()
                             first_inverted, cells->area(cells->cell_index(first_inverted)));
   if (tangled)
     problems += fmt::format("; {} rings cross themselves (first: cell {})", tangled, first_tangled);
+  if (overlapping.pairs) {
+    const tagint *pair = overlapping.first;
+    problems +=
+        fmt::format("; {} pairs of cells interpenetrate (first: {})", overlapping.pairs,
+                    pair[0] == pair[1] ? fmt::format("cell {} and its periodic image", pair[0])
+                                       : fmt::format("cells {} and {}", pair[0], pair[1]));
+  }
   problems += geometry;
 
   // the log line carries the problems too: LAMMPS stops printing warnings after its limit
@@ -160,25 +175,13 @@ int FixDPolyCheck::check()
   if (stop_on_failure) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
   return (!converged) + !(pressure_error <= pressure_tolerance) + (inverted > 0) + (tangled > 0) +
-      !(std::isfinite(energy) && std::isfinite(force_norm)) + !std::isfinite(pressure_value) +
-      !geometry.empty();
+      (overlapping.pairs > 0) + !(std::isfinite(energy) && std::isfinite(force_norm)) +
+      !std::isfinite(pressure_value) + !geometry.empty();
 }
 
 /* ----------------------------------------------------------------------
    rings that cross themselves: any two non-adjacent segments of one ring that intersect
 ------------------------------------------------------------------------- */
-
-namespace {
-bool segments_cross(const double *a, const double *b, const double *c, const double *d)
-{
-  auto side = [](const double *p, const double *q, const double *r) {
-    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-  };
-  const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
-  return ((s1 > 0) != (s2 > 0)) && ((s3 > 0) != (s4 > 0)) && s1 != 0 && s2 != 0 && s3 != 0 &&
-      s4 != 0;
-}
-}    // namespace
 
 int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &first)
 {
@@ -191,10 +194,8 @@ int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &firs
     for (int i = 0; i < n && !crossed; i++)
       for (int j = i + 2; j < n && !crossed; j++) {
         if (i == 0 && j == n - 1) continue;    // neighbours through the closing segment
-        const RingPoint &a = vertices.at(ring[i]), &b = vertices.at(ring[(i + 1) % n]);
-        const RingPoint &c = vertices.at(ring[j]), &d = vertices.at(ring[(j + 1) % n]);
-        const double pa[2] = {a.x, a.y}, pb[2] = {b.x, b.y}, pc[2] = {c.x, c.y}, pd[2] = {d.x, d.y};
-        crossed = segments_cross(pa, pb, pc, pd);
+        crossed = DPoly::segments_cross(vertices.point(ring[i]), vertices.point(ring[(i + 1) % n]),
+                                        vertices.point(ring[j]), vertices.point(ring[(j + 1) % n]));
       }
     if (crossed) {
       if (!tangled) first = cells->cell_id(cell);
@@ -202,6 +203,23 @@ int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &firs
     }
   }
   return tangled;
+}
+
+/* ----------------------------------------------------------------------
+   cells whose outlines (the polygons through their vertex centres) overlap, across the periodic
+   boundary too. Every rank holds every vertex here and finds the same pairs.
+------------------------------------------------------------------------- */
+
+DPoly::Interpenetration FixDPolyCheck::interpenetrating_cells(const UnwrappedVertices &vertices)
+{
+  std::vector<DPoly::Outline> outlines(cells->ncells());
+  for (int cell = 0; cell < cells->ncells(); cell++) {
+    outlines[cell].cell = cells->cell_id(cell);
+    for (tagint tag : cells->ring(cell)) outlines[cell].corners.push_back(vertices.point(tag));
+  }
+  const DPoly::Box box{{domain->xprd, domain->yprd},
+                       {domain->xperiodic != 0, domain->yperiodic != 0}};
+  return DPoly::interpenetrating_cells(outlines, box);
 }
 
 /* ----------------------------------------------------------------------

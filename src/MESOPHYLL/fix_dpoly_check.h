@@ -12,6 +12,7 @@ FixStyle(dpoly/check,FixDPolyCheck);
 #ifndef LMP_FIX_DPOLY_CHECK_H
 #define LMP_FIX_DPOLY_CHECK_H
 
+#include "dpoly_overlap.h"
 #include "fix_dpoly_stage.h"
 
 #include <string>
@@ -20,9 +21,9 @@ namespace LAMMPS_NS {
 
 // Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
 // stopped, the final force norm, |P - P0|/P0, cells with area <= 0, rings that cross themselves,
-// packing fractions outside (0, 1] and ring segments not shorter than half the box. Warns
-// (default) or stops with an error that names what failed. The first stage after a
-// minimization: it sees the minimum before any other stage changes it.
+// cells that interpenetrate, packing fractions outside (0, 1] and ring segments not shorter than
+// half the box. Warns (default) or stops with an error that names what failed. The first stage
+// after a minimization: it sees the minimum before any other stage changes it.
 class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
@@ -34,11 +35,13 @@ class FixDPolyCheck : public FixDPolyStage {
   double pressure_tolerance;
   int stop_on_failure;
   bigint minima;
-  // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force evaluations
-  double last[7];
+  // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force
+  // evaluations, pairs of interpenetrating cells (appended last: tools read the others by index)
+  double last[8];
   int check();                // the number of problems found
   class UnwrappedVertices;    // every vertex on every rank, gathered once per check
   int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
+  DPoly::Interpenetration interpenetrating_cells(const UnwrappedVertices &vertices);
   // "; ..." for each impossible geometry, "" if none
   std::string geometry_problems(const UnwrappedVertices &vertices);
 };
