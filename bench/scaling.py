@@ -63,7 +63,11 @@ CHECK_COLUMNS = ["PotEng", "Press", "Volume", "c_tissue[1]", "c_tissue[2]", "c_t
 
 def tissue(base, cells, work):
     """k x k copies of base (its cell count times k^2 = cells); the path of the data file."""
-    base_cells = int(re.search(r"N(\d+)", os.path.basename(base)).group(1))
+    match = re.search(r"N(\d+)", os.path.basename(base))
+    if match is None:
+        sys.exit(f"scaling: the base tissue's name must say its cells as N<cells> (as "
+                 f"voronoi_N64.data), got {base}")
+    base_cells = int(match.group(1))
     k = math.isqrt(cells // base_cells)
     if k * k * base_cells != cells:
         sys.exit(f"scaling: {cells} cells is not {base_cells} k^2 (the base tissue's copies)")

@@ -76,8 +76,14 @@ def check_command_line(stand_in):
     argv, _ = mpi_launcher.command(3, program)
     check(argv == [stand_in, "--tag", "a b", "-n", "3", "--bind-to", "core", "--map-by", "slot"]
           + program, f"environment: launcher, rank flag and flags split as the shell ({argv})")
-    argv, _ = mpi_launcher.command(3, program, mpirun="srun", flags="", numproc_flag="-N")
-    check(argv == ["srun", "-N", "3"] + program, f"arguments win over the environment ({argv})")
+    # a launcher that exists on every machine ('true'), named by argument
+    argv, _ = mpi_launcher.command(3, program, mpirun="true", flags="", numproc_flag="-N")
+    check(argv == ["true", "-N", "3"] + program, f"arguments win over the environment ({argv})")
+    try:
+        mpi_launcher.command(2, program, mpirun="no-such-launcher")
+        check(False, "a launcher that does not exist is refused")
+    except SystemExit as e:
+        check("'no-such-launcher' not found" in str(e), f"a missing launcher is named: {e}")
     os.environ["MESOPHYLL_MPIRUN_FLAGS"] = ""
     argv, _ = mpi_launcher.command(2, program)
     check(argv == [stand_in, "--tag", "a b", "-n", "2"] + program,
@@ -158,6 +164,15 @@ def check_tools(lmp, stand_in, work):
           + ("" if result.returncode == 0 else "\n" + result.stderr[-2000:]))
     check(len(launched) == 1 and launched[0][:3] == ["-n", "2", "--stand-in-flag"],
           f"run-example.sh: launcher -n 2 --stand-in-flag lmp ... ({launched})")
+    # a launcher the user named that does not exist: an error, not a quiet run on one rank
+    os.environ["MESOPHYLL_MPIRUN"] = os.path.join(work, "no-such-launcher")
+    result = subprocess.run([os.path.join(ROOT, "tools", "run-example.sh"), "--build-dir", build,
+                             "--np", "2", "polygons", "in.relax_cells"],
+                            capture_output=True, text=True)
+    check(result.returncode == 2 and "no-such-launcher" in result.stderr
+          and len(records(record)) == 0,
+          f"run-example.sh: a missing MESOPHYLL_MPIRUN stops (exit {result.returncode}: "
+          f"{result.stderr.strip()[-300:]})")
     clean_environment()
 
 

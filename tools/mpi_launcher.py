@@ -23,6 +23,7 @@ a launcher. Standard library only.
 import functools
 import os
 import shlex
+import shutil
 import subprocess
 
 DEFAULT_LAUNCHER = "mpirun"
@@ -62,5 +63,10 @@ def command(ranks, program, mpirun=None, flags=None, numproc_flag=None, env=None
         flags = os.environ.get("MESOPHYLL_MPIRUN_FLAGS")
     if flags is None:
         flags = "--oversubscribe" if open_mpi else ""
-    argv = shlex.split(name) + [numproc_flag, str(ranks)] + shlex.split(flags) + list(program)
+    words = shlex.split(name)
+    if not words or shutil.which(words[0]) is None:
+        # a clear stop rather than a FileNotFoundError traceback from subprocess
+        raise SystemExit(f"mpi_launcher: MPI launcher '{name}' not found; set MESOPHYLL_MPIRUN "
+                         f"(or the tool's --mpirun) to your MPI's launcher, e.g. mpirun or srun")
+    argv = words + [numproc_flag, str(ranks)] + shlex.split(flags) + list(program)
     return argv, env

@@ -29,7 +29,16 @@ src="$here/examples/$example"
 [ -f "$src/$input" ] || { echo "run-example.sh: no input $src/$input" >&2; exit 2; }
 [ -x "$build_dir/lmp" ] || { echo "run-example.sh: no $build_dir/lmp; run tools/setup.sh first" >&2; exit 2; }
 
-command -v mpirun >/dev/null || np=1
+# the launcher's program (tools/mpi_launcher.py's choice, below): the default mpirun missing
+# means one rank, as before; a launcher the user named and that is missing is an error
+read -r -a launcher <<< "${MESOPHYLL_MPIRUN:-mpirun}"
+if [ "$np" -gt 1 ] && ! command -v "${launcher[0]}" >/dev/null; then
+  if [ -n "${MESOPHYLL_MPIRUN:-}" ]; then
+    echo "run-example.sh: MPI launcher '${launcher[0]}' (MESOPHYLL_MPIRUN) not found" >&2; exit 2
+  fi
+  echo "run-example.sh: no mpirun on PATH, running on 1 rank"
+  np=1
+fi
 work="$build_dir/examples/$example"
 log="log.$(basename "$input" | sed 's/^in\.//')"
 if [ -n "$resume" ]; then
@@ -48,7 +57,6 @@ if [ "$np" -gt 1 ]; then
   # the launcher as tools/mpi_launcher.py chooses it: $MESOPHYLL_MPIRUN (default mpirun),
   # $MESOPHYLL_NUMPROC_FLAG (-np), $MESOPHYLL_MPIRUN_FLAGS (default for Open MPI
   # --oversubscribe, and its run-as-root variables; for other launchers none)
-  read -r -a launcher <<< "${MESOPHYLL_MPIRUN:-mpirun}"
   flags=""
   if "${launcher[@]}" --version 2>&1 | grep -qE "Open MPI|OpenRTE"; then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
