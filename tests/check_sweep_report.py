@@ -102,6 +102,16 @@ def fake_results(folder, unconverged=()):
             f.write("finished\n")
 
 
+def withdraw(run):
+    """Withdraw a finished run: its outputs into withdrawn/, with the reason."""
+    os.makedirs(os.path.join(run, "withdrawn"))
+    for name in os.listdir(run):
+        if name not in ("run.json", "run.lmp", "withdrawn"):
+            os.replace(os.path.join(run, name), os.path.join(run, "withdrawn", name))
+    with open(os.path.join(run, "withdrawn", "REASON.txt"), "w") as f:
+        f.write("a made-up\nreason\n")
+
+
 def mean_se(values):
     m = sum(values) / len(values)
     sd = math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
@@ -208,6 +218,8 @@ def main():
         fake_results(fig6)
         fake_results(fig5)
         fake_results(fig5_cap)
+        withdraw(os.path.join(fig5_cap, "runs", sorted(os.listdir(os.path.join(fig5_cap,
+                                                                                "runs")))[0]))
         fake_results(fig5_other, unconverged={("beta=30 eps_b=0.4", "1")})
         doc = os.path.join(scratch, "doc", "validation.md")
         os.makedirs(os.path.dirname(doc))
@@ -267,6 +279,13 @@ def main():
         text = open(doc).read()
         expect(result.returncode == 0 and "growth-step cap of 3 against 5 here" in text and
                "none borrowed" in text, "the sweep capped at 5 steps borrowed runs capped at 3")
+        # its withdrawn run: unfinished, and named with its reason
+        statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_cap,
+                                                                          "summary.csv")))]
+        expect(statuses.count("unfinished") == 1 and
+               "Withdrawn: run 1 of fig5_cap (a made-up reason)" in text and
+               "0.00 h of it in withdrawn runs" in text,
+               f"the withdrawn run: statuses {statuses}, or no 'Withdrawn' line")
         # a run stopped by the iteration limit is unconverged (not failed): tools/sweep.py
         # summary must read fix dpoly/check's words
         statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_other,

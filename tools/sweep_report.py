@@ -154,14 +154,19 @@ def sweep_cost(rows):
 
 
 def withdrawn_runs(folder):
-    """{reason: [run ids]} of the runs of a sweep folder that were withdrawn."""
-    found = {}
+    """({reason: [run ids]}, loop seconds) of the runs of a sweep folder that were withdrawn:
+    their cost still counts."""
+    found, loop = {}, 0.0
     runs = os.path.join(folder, "runs")
     for run in sorted(os.listdir(runs)):
         path = os.path.join(runs, run, WITHDRAWN_REASON)
         if os.path.exists(path):
             found.setdefault(" ".join(open(path).read().split()), []).append(run)
-    return found
+            log = os.path.join(os.path.dirname(path), "log.lammps")
+            if os.path.exists(log):
+                text = open(log, errors="replace").read()
+                loop += sum(t.seconds for t in sweep.mesophyll_run.loop_times(text))
+    return found, loop
 
 
 class Sweep:
@@ -177,7 +182,8 @@ class Sweep:
             shutil.copy(os.path.join(folder, f"{table}.csv"),
                         os.path.join(out, f"{self.name}_{table}.csv"))
         self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
-        self.withdrawn = withdrawn_runs(folder)
+        self.withdrawn, self.withdrawn_loop_s = withdrawn_runs(folder)
+        self.loop_s += self.withdrawn_loop_s
         self.figures = []
         self.draw(extra)
 
@@ -498,15 +504,20 @@ def section(sweeps, doc_dir, command, notes):
         tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
         lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
                   f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
-                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts), "
+                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts"
+                  + (f", {sweep.withdrawn_loop_s / 3600:.2f} h of it in withdrawn runs"
+                     if sweep.withdrawn else "") + "), "
                   f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
                   f"attempts of {sweep.timed} run{'s' if sweep.timed != 1 else ''}{rate}; "
                   f"on a shared machine wall times "
                   f"depend on the other jobs).", ""]
         for reason, runs in sweep.withdrawn.items():
-            lines += [f"Withdrawn: run{'s' if len(runs) > 1 else ''} {', '.join(runs)} of "
-                      f"{sweep.name} ({reason}); their outputs lie in runs/<id>/withdrawn/, "
-                      f"they count as unfinished above and a resumed sweep runs them again.", ""]
+            many = len(runs) > 1
+            lines += [f"Withdrawn: run{'s' if many else ''} {', '.join(runs)} of {sweep.name} "
+                      f"({reason}); {'their' if many else 'its'} outputs lie in "
+                      f"runs/<id>/withdrawn/, {'they count' if many else 'it counts'} as "
+                      f"unfinished here, and a resumed sweep runs {'them' if many else 'it'} "
+                      f"again from the start.", ""]
         lines += points_table(sweep) + [""]
         lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] or \
             ["No figure: no run of this sweep has an accepted status."]
