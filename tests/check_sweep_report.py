@@ -12,13 +12,18 @@ a copy of a validation.md. Checks, against means and standard errors computed he
   * P0 = 5e-2 compacts: holds, from the two ok runs only; the third run of that point has a
     ring that crosses itself (a FAILED check line) and an absurd delta_phi_plus, and must be
     counted as failed, never averaged;
-  * P0 up to 1e-3 hardly matters: holds (the 1e-5 runs differ from the 1e-3 ones by less than
-    two standard errors);
+  * P0 up to 1e-3 hardly matters: no difference resolved (the 1e-5 runs differ from the 1e-3
+    ones by less than two standard errors), which the line must not call "holds";
   * low eps_b compacts: the opposite is resolved (its runs compact less); low beta compacts:
     not resolved (equal means);
-  * the Fig 5 sweep borrows the Fig 6 sweep's P0 = 1e-5 runs as its base point; the one at
+  * the Fig 5 sweep borrows the Fig 6 sweep's P0 = 1e-5 runs as its base point (same step cap); one
+    capped at 5 growth steps does not borrow runs that ended at the cap of 3; the one at
     P0 = 1e-4 borrows nothing and says so; one of its runs ends at the iteration limit (fix
     dpoly/check's words in its log) and must be *unconverged*, not *failed*;
+  * the verdict functions on hand-made ensembles: points whose runs all give 0 (no spread)
+    cannot tell a direction (never "does not hold"); no resolved difference reads "no
+    difference resolved", never "holds", and a point with too few runs is not counted as
+    compared;
   * the section is replaced in place: a second report leaves one section, and the text around
     it (and a section of tools/validate.py --published) unchanged.
 Exit 77 (skipped) without python3-matplotlib, which the figures need.
@@ -97,6 +102,16 @@ def fake_results(folder, unconverged=()):
             f.write("finished\n")
 
 
+def withdraw(run):
+    """Withdraw a finished run: its outputs into withdrawn/, with the reason."""
+    os.makedirs(os.path.join(run, "withdrawn"))
+    for name in os.listdir(run):
+        if name not in ("run.json", "run.lmp", "withdrawn"):
+            os.replace(os.path.join(run, name), os.path.join(run, "withdrawn", name))
+    with open(os.path.join(run, "withdrawn", "REASON.txt"), "w") as f:
+        f.write("a made-up\nreason\n")
+
+
 def mean_se(values):
     m = sum(values) / len(values)
     sd = math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
@@ -126,7 +141,65 @@ def check_claim(text, title, point, other, verdict, counts=None):
         expect(counts in line, f"'{title}': expected '{counts}' in: {line}")
 
 
+class StubSweep:
+    """What claim_line, unchanged_lines and optimal_lines read of a sweep: a name, the
+    Ensemble at grid values, and the points in order."""
+
+    def __init__(self, report, name, points):
+        self.name, self.table = name, [(values, report.Ensemble(rows, {"ok"}))
+                                       for values, rows in points]
+
+    def at(self, **values):
+        return next((e for v, e in self.table if v == values), None)
+
+    def points(self):
+        return [(" ".join(f"{k}={x:g}" for k, x in v.items()), e) for v, e in self.table]
+
+
+def runs(quantity, values, status="ok"):
+    return [{"status": status, quantity: str(v), "steps": "5", "phi_final": "0.44",
+             "phi_half": "0.5"} for v in values]
+
+
+def check_verdict_rules():
+    sys.path.insert(0, os.path.join(ROOT, "tools"))
+    import sweep_report as report
+    # every run of both points gives delta_phi_plus 0: the runs cannot show compaction
+    flat = StubSweep(report, "flat", [({"beta": 30}, runs("delta_phi_plus", [0, 0, 0])),
+                                      ({"beta": 100}, runs("delta_phi_plus", [0, 0, 0]))])
+    line = report.claim_line("low beta compacts", flat, {"beta": 30}, {"beta": 100},
+                             "delta_phi_plus", +1)
+    expect("**cannot be told**" in line and "cannot show" in line and "does not hold" not in
+           line, f"equal values without spread: not 'cannot be told': {line}")
+    # means 1.00 and 1.02 with SE 0.0115 each: 1.2 SE apart, not resolved; a third pressure with
+    # one accepted run is not compared and not counted as resolved
+    close = StubSweep(report, "close", [
+        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
+        ({"P0": 1e-5}, runs("delta_A_early", [1.0, 1.02, 1.04])),
+        ({"P0": 1e-4}, runs("delta_A_early", [5.0]) + runs("delta_A_early", [9.0], "failed"))])
+    lines = report.unchanged_lines(close, [{"P0": 1e-5}, {"P0": 1e-4}], {"P0": 1e-3})
+    head = lines[0]
+    expect("no difference resolved at 2 standard errors" in head and "**holds**" not in head
+           and "does not hold" not in head and "in 1 comparison " in head,
+           f"no resolved difference: not 'no difference resolved' in 1 comparison: {head}")
+    expect(any("difference +1.2 standard errors (SE of the difference 0.016)" in x
+               for x in lines), f"the per-line difference and its SE: {lines}")
+    expect(any("at P0 = 0.0001" in x and "not compared" in x for x in lines),
+           f"the pressure with one accepted run is not marked 'not compared': {lines}")
+    # the base point of the default: no point resolved lower, and how many could be compared
+    base = StubSweep(report, "base", [
+        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
+        ({"P0": 1e-5}, runs("delta_A_early", [1.0, 1.02, 1.04])),
+        ({"P0": 1e-4}, runs("delta_A_early", [0.5]))])
+    optimal = [x for x in report.optimal_lines({"fig6": base}) if "delta_A_early" in x]
+    expect(len(optimal) == 1 and "**holds**" not in optimal[0] and
+           "no point resolved lower" in optimal[0] and "among the 1 of 2 other points" in
+           optimal[0] and "rank 2 of the 3 points" in optimal[0],
+           f"near-optimal without a resolved difference: {optimal}")
+
+
 def main():
+    check_verdict_rules()
     os.environ["MESOPHYLL_MISSING_EXIT"] = "77"    # sweep_plot.py without matplotlib: skip
     scratch = tempfile.mkdtemp(prefix="sweep_report_")
     try:
@@ -139,8 +212,14 @@ def main():
         fig5_other = plan(scratch, "fig5_p4", "fig5.mesophyll",
                           ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
                           "steps 3 phi_stop 0.45 P0 1e-4 ftol 1e-11")
+        fig5_cap = plan(scratch, "fig5_cap", "fig5.mesophyll",
+                        ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
+                        "steps 5 phi_stop 0.45 P0 1e-5 ftol 1e-11")
         fake_results(fig6)
         fake_results(fig5)
+        fake_results(fig5_cap)
+        withdraw(os.path.join(fig5_cap, "runs", sorted(os.listdir(os.path.join(fig5_cap,
+                                                                                "runs")))[0]))
         fake_results(fig5_other, unconverged={("beta=30 eps_b=0.4", "1")})
         doc = os.path.join(scratch, "doc", "validation.md")
         os.makedirs(os.path.dirname(doc))
@@ -172,9 +251,11 @@ def main():
         check_claim(text, "low beta compacts", "beta=30 eps_b=0.4", "P0=1e-5",
                     "cannot be told at this resolution")
         unchanged = line_of(text, "P0 up to 1e-3 hardly matters")
-        expect("**holds**" in unchanged, f"P0 up to 1e-3: not 'holds': {unchanged}")
+        expect("no difference resolved" in unchanged and "**holds**" not in unchanged,
+               f"P0 up to 1e-3: not 'no difference resolved': {unchanged}")
         expect("fig5_t's base point" in text and "fig6_t's P0 = 1e-05 point" in text,
                "the Fig 5 sweep did not borrow the Fig 6 sweep's P0 = 1e-5 runs")
+        expect("both cap growth at 3 steps" in text, "the borrowing does not name the step cap")
         for name in ("fig6_t_against.png", "fig6_t_curves.png", "fig5_t_heatmaps.png",
                      "fig5_t_summary.csv", "fig6_t_points.csv"):
             expect(os.path.exists(os.path.join(out, name)), f"{name} was not written")
@@ -191,6 +272,20 @@ def main():
                "the P0 = 1e-4 sweep: no message that the Fig 6 sweep lacks its pressure")
         expect("not run (fig5_p4 has no point beta = 100, eps_b = 0.4)" in text,
                "the P0 = 1e-4 sweep: its low-beta line does not say the base is missing")
+        # a sweep capped at 5 growth steps borrows nothing from runs capped at 3 that ended at
+        # the cap (phi_patch 0.5, above phi_stop): they are not the runs it would have made
+        result = subprocess.run([sys.executable, REPORT, "--fig6", fig6, "--fig5", fig5_cap,
+                                 "--out", out, "--doc", doc], capture_output=True, text=True)
+        text = open(doc).read()
+        expect(result.returncode == 0 and "growth-step cap of 3 against 5 here" in text and
+               "none borrowed" in text, "the sweep capped at 5 steps borrowed runs capped at 3")
+        # its withdrawn run: unfinished, and named with its reason
+        statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_cap,
+                                                                          "summary.csv")))]
+        expect(statuses.count("unfinished") == 1 and
+               "Withdrawn: run 1 of fig5_cap (a made-up reason)" in text and
+               "0.00 h of it in withdrawn runs" in text,
+               f"the withdrawn run: statuses {statuses}, or no 'Withdrawn' line")
         # a run stopped by the iteration limit is unconverged (not failed): tools/sweep.py
         # summary must read fix dpoly/check's words
         statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_other,

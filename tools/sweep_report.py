@@ -35,6 +35,9 @@ PLOT = os.path.join(ROOT, "tools", "sweep_plot.py")
 SECTION_BEGIN = "<!-- sweeps: tools/sweep_report.py -->"
 SECTION_END = "<!-- /sweeps -->"
 PUBLISHED_BEGIN = "<!-- published: tools/validate.py --published -->"
+# a run withdrawn after it finished: its outputs moved to runs/<id>/withdrawn/, with the reason
+# in this file there; it reads unfinished, and a resumed sweep runs it again
+WITHDRAWN_REASON = os.path.join("withdrawn", "REASON.txt")
 # a difference counts as resolved when it exceeds this many standard errors of the difference
 RESOLVED = 2.0
 # z near phi_patch = 0.5 compares two points only where both came this close to 0.5
@@ -47,6 +50,8 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
         "fig6": {"P0": 1e-3}}
 # The three figures' base sets differ in P0 only: a Fig 4 or 5 sweep run at a pressure of the
 # Fig 6 sweep may leave its base point out and borrow those runs (borrow_base checks it).
+# The runs must share the stopping rule too: phi_stop here; the growth-step cap "steps" may
+# differ only where no borrowed run reached the smaller cap (borrow_base checks it).
 BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set")
 
 
@@ -95,8 +100,9 @@ def compare(a, b, quantity, sign):
     """Is quantity larger (sign +1) or smaller (sign -1) at ensemble a than at b? 'holds' when
     the difference of the means, in the stated direction, exceeds RESOLVED standard errors of
     the difference (the two standard errors added in quadrature); 'opposite' when it does so
-    against it; 'not resolved' in between; 'equal' when every run of both has the same value;
-    'too few runs' below two accepted runs either side.
+    against it; 'not resolved' in between; 'equal' when every run of both has the same value
+    (no spread: these runs cannot show a difference either way); 'too few runs' below two
+    accepted runs either side.
     Returns (verdict, mean_a, se_a, n_a, mean_b, se_b, n_b, difference / its standard error)."""
     ma, _, sa, na = a.stats(quantity)
     mb, _, sb, nb = b.stats(quantity)
@@ -147,6 +153,22 @@ def sweep_cost(rows):
     return loop, sum(walls), len(walls)
 
 
+def withdrawn_runs(folder):
+    """({reason: [run ids]}, loop seconds) of the runs of a sweep folder that were withdrawn:
+    their cost still counts."""
+    found, loop = {}, 0.0
+    runs = os.path.join(folder, "runs")
+    for run in sorted(os.listdir(runs)):
+        path = os.path.join(runs, run, WITHDRAWN_REASON)
+        if os.path.exists(path):
+            found.setdefault(" ".join(open(path).read().split()), []).append(run)
+            log = os.path.join(os.path.dirname(path), "log.lammps")
+            if os.path.exists(log):
+                text = open(log, errors="replace").read()
+                loop += sum(t.seconds for t in sweep.mesophyll_run.loop_times(text))
+    return found, loop
+
+
 class Sweep:
     """A summarized sweep folder and the figures drawn from it."""
 
@@ -160,6 +182,8 @@ class Sweep:
             shutil.copy(os.path.join(folder, f"{table}.csv"),
                         os.path.join(out, f"{self.name}_{table}.csv"))
         self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
+        self.withdrawn, self.withdrawn_loop_s = withdrawn_runs(folder)
+        self.loop_s += self.withdrawn_loop_s
         self.figures = []
         self.draw(extra)
 
@@ -231,12 +255,37 @@ class Sweep:
                 [r for r in self.rows if r["point"] == self.rows[0]["point"]]):
             return (f"{self.name} has no base point; {fig6.name}'s P0 = {p0:g} runs differ in "
                     f"{', '.join(differ) or 'seeds or tissues'}: none borrowed.")
+        caps = (mine["variables"].get("steps"), fig6.run_record(rows[0])["variables"].get("steps"))
+        phi_stop = mine["variables"].get("phi_stop")
+        cap_note = step_cap_note(rows, caps, phi_stop)
+        if cap_note is None:
+            return (f"{self.name} has no base point; {fig6.name}'s P0 = {p0:g} runs have a "
+                    f"growth-step cap of {caps[1]} against {caps[0]} here, and not all of them "
+                    f"stopped at phi_patch {phi_stop} before the smaller cap: none borrowed.")
         label = f"base ({fig6.name}, P0={p0:g})"
         self.borrowed = (label, Ensemble(rows, self.accept))
-        return (f"{self.name}'s base point {BASE[self.kind]} is {fig6.name}'s P0 = {p0:g} point "
-                f"(the same parameter set apart from P0, pressure, force tolerance, seeds and "
-                f"tissues; its runs stop at {fig6.run_record(rows[0])['variables'].get('steps')} "
-                f"steps or phi_patch 0.45); it is not a tile of the heatmap.")
+        return (f"{self.name}'s base point {BASE[self.kind]} is {fig6.name}'s P0 = {p0:g} point: "
+                f"the same parameter set apart from P0, and runs with the same pressure, force "
+                f"tolerance, phi_stop {phi_stop}, seeds and tissues; {cap_note}. It is not a "
+                f"tile of the heatmap.")
+
+
+def step_cap_note(rows, caps, phi_stop):
+    """The borrowed runs are the runs this sweep would have made when both sweeps cap growth at
+    the same number of steps, or when every borrowed run stopped at phi_stop before the
+    smaller cap. Returns a clause saying which, or None when neither."""
+    if caps[0] == caps[1]:
+        return f"both cap growth at {caps[0]} steps"
+    smaller = min(int(c) for c in caps if c is not None) if None not in caps else None
+    stopped = smaller is not None and phi_stop is not None and all(
+        r["status"] != "unfinished" and r["phi_final"] not in ("", None)
+        and float(r["phi_final"]) < float(phi_stop) and int(r["steps"]) - 1 < smaller
+        for r in rows)
+    if not stopped:
+        return None
+    return (f"the growth-step caps differ ({caps[0]} here, {caps[1]} there), but every "
+            f"borrowed run stopped at phi_patch {phi_stop} after at most "
+            f"{max(int(r['steps']) - 1 for r in rows)} growth steps, before either cap")
 
 
 # --- the section ---------------------------------------------------------------------------------
@@ -267,7 +316,10 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
     text = {"holds": "**holds**", "opposite": "**does not hold: the opposite is resolved**",
             "not resolved": f"**cannot be told at this resolution** (difference below "
                             f"{RESOLVED:g} standard errors)",
-            "equal": f"**does not hold**: every run of both gives {fmt(ma, 'g')}",
+            "equal": f"**cannot be told**: every run of both gives {quantity} = "
+                     f"{fmt(ma, 'g')}, so these runs cannot show a difference"
+                     + (" (the runs stop once phi_patch falls below phi_stop, and none "
+                        "compacted before that: this protocol cannot show compaction here)" if quantity == "delta_phi_plus" else ""),
             "not near 0.5": f"**cannot be told**: the runs of a point ended before phi_patch "
                             f"came within {NEAR_HALF:g} of 0.5, so z is compared at different "
                             f"stages",
@@ -292,36 +344,51 @@ def reach_note(e):
 
 def unchanged_lines(sweep, values_list, reference):
     """'P0 up to 1e-3 hardly matters': each lower pressure against the reference one, for each
-    quantity of the figure; holds where no difference is resolved."""
+    quantity of the figure. No resolved difference is not a shown equality: the verdict says
+    so, and how large a difference would have been resolved (RESOLVED standard errors)."""
     if sweep is None:
         return ["- *P0 up to 1e-3 hardly matters*: not run (no Fig 6 sweep folder given)."]
     b = sweep.at(**reference)
-    lines, resolved, compared = [], 0, 0
+    lines, counts = [], {}
     for values in values_list:
         a = sweep.at(**values)
         if a is None or b is None:
             continue
         for quantity in ("delta_A_early", "delta_A_late", "delta_phi_plus", "z_half"):
             verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, +1)
+            counts[verdict] = counts.get(verdict, 0) + 1
+            where = (f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} against "
+                     f"{mean_se(mb, sb, nb)} at {reference['P0']:g}: ")
             if verdict == "too few runs":
-                continue
-            compared += 1
-            resolved += verdict not in ("not resolved", "equal")
-            lines.append(f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} "
-                         f"against {mean_se(mb, sb, nb)} at {reference['P0']:g}: difference "
-                         f"{fmt(score, '+.1f')} standard errors")
-    if not compared:
+                lines.append(where + "not compared (fewer than two accepted runs)")
+            elif verdict == "equal":
+                lines.append(where + f"every run of both gives {fmt(ma, 'g')}: no difference "
+                                     f"to resolve, none shown either")
+            else:
+                lines.append(where + f"difference {fmt(score, '+.1f')} standard errors (SE of "
+                                     f"the difference {fmt(math.hypot(sa, sb), '.2g')})")
+    resolved = counts.get("holds", 0) + counts.get("opposite", 0)
+    tested = resolved + counts.get("not resolved", 0)
+    if not tested:
         return ["- *P0 up to 1e-3 hardly matters*: cannot be told (no two pressures at or "
-                "below 1e-3 with two accepted runs each)."]
-    verdict = ("**holds**: no difference resolved" if not resolved else
-               f"**does not hold**: {resolved} of {compared} differences resolved")
-    return [f"- *P0 up to 1e-3 hardly matters* ({sweep.name}): {verdict} (differences counted "
-            f"as resolved above {RESOLVED:g} standard errors):"] + lines
+                "below 1e-3 with two accepted runs each and spread in a quantity)."]
+    left = [f"{counts[v]} {what}" for v, what in (("equal", "without spread"),
+                                                 ("too few runs", "with too few runs"))
+            if counts.get(v)]
+    if resolved:
+        verdict = f"**does not hold**: {resolved} of {tested} differences resolved"
+    else:
+        verdict = (f"**no difference resolved at {RESOLVED:g} standard errors** in {tested} "
+                   f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not shown: a difference smaller "
+                   f"than {RESOLVED:g} SE of the difference, given per line, could be there)")
+    return [f"- *P0 up to 1e-3 hardly matters* ({sweep.name}): {verdict}"
+            + (f"; not compared: {', '.join(left)}" if left else "") + ":"] + lines
 
 
 def optimal_lines(sweeps):
     """'the default is near-optimal in delta_A': per sweep, the base point's delta_A against
-    every other point; holds where no point is lower by a resolved difference."""
+    every other point. No point resolved lower is not a shown optimum: the line says so, and
+    how many points could be compared at all."""
     lines = []
     for kind in ("fig4", "fig5", "fig6"):
         sweep = sweeps.get(kind)
@@ -332,14 +399,17 @@ def optimal_lines(sweeps):
             lines.append(f"  - {sweep.name}: no base point ({BASE[kind]}).")
             continue
         for quantity in ("delta_A_early", "delta_A_late"):
-            better, ranks = [], []
+            better, ranks, compared = [], [], 0
             mb = base.stats(quantity)[0]
-            for label, e in sweep.points():
+            everywhere = sweep.points()
+            for label, e in everywhere:
                 m = e.stats(quantity)[0]
                 if m is None or mb is None:
                     continue
                 ranks.append(m)
-                if compare(e, base, quantity, -1)[0] == "holds":
+                verdict = compare(e, base, quantity, -1)[0]
+                compared += e.rows != base.rows and verdict != "too few runs"
+                if verdict == "holds":
                     better.append(f"{label} ({m:.3g})")
             if mb is None:
                 lines.append(f"  - {sweep.name}, {quantity}: the base point has no accepted run.")
@@ -351,8 +421,12 @@ def optimal_lines(sweeps):
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
             lines.append(f"  - {sweep.name}, {quantity}: base {mean_se(m, se, n)}, "
-                         f"rank {rank} of {len(ranks)} points; "
-                         + ("**holds** (no point resolved lower)" if not better else
+                         f"rank {rank} of the {len(ranks)} points with an accepted run "
+                         f"({len(everywhere)} points in the sweep); "
+                         + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
+                            f"among the {compared} of {len(everywhere) - 1} other points with "
+                            f"two or more accepted runs (consistent, not shown)"
+                            if not better else
                             "**does not hold**: resolved lower at " + ", ".join(better)))
     if not lines:
         return ["- *the default is near-optimal in delta_A*: not run."]
@@ -393,7 +467,12 @@ def section(sweeps, doc_dir, command, notes):
              f"Verdict rule: a direction **holds** where the difference of the two ensemble "
              f"means, in the stated direction, exceeds {RESOLVED:g} standard errors of the "
              f"difference; it **cannot be told at this resolution** where it is smaller; "
-             f"**the opposite is resolved** where it exceeds {RESOLVED:g} against it.", ""]
+             f"**the opposite is resolved** where it exceeds {RESOLVED:g} against it. Where "
+             f"every run of both points gives one value (no spread), the runs cannot show the "
+             f"direction: *cannot be told*. For the claims that something hardly matters or "
+             f"is near-optimal, no resolved difference is consistent with the claim but does "
+             f"not show it: those lines say *no difference resolved*, with the standard "
+             f"errors, never *holds*.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
     f4, f5, f6 = sweeps.get("fig4"), sweeps.get("fig5"), sweeps.get("fig6")
     lines.append(claim_line("low beta compacts", f5, {"beta": 30, "eps_b": 0.4},
@@ -425,11 +504,20 @@ def section(sweeps, doc_dir, command, notes):
         tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
         lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
                   f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
-                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts), "
+                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts"
+                  + (f", {sweep.withdrawn_loop_s / 3600:.2f} h of it in withdrawn runs"
+                     if sweep.withdrawn else "") + "), "
                   f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
                   f"attempts of {sweep.timed} run{'s' if sweep.timed != 1 else ''}{rate}; "
                   f"on a shared machine wall times "
                   f"depend on the other jobs).", ""]
+        for reason, runs in sweep.withdrawn.items():
+            many = len(runs) > 1
+            lines += [f"Withdrawn: run{'s' if many else ''} {', '.join(runs)} of {sweep.name} "
+                      f"({reason}); {'their' if many else 'its'} outputs lie in "
+                      f"runs/<id>/withdrawn/, {'they count' if many else 'it counts'} as "
+                      f"unfinished here, and a resumed sweep runs {'them' if many else 'it'} "
+                      f"again from the start.", ""]
         lines += points_table(sweep) + [""]
         lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] or \
             ["No figure: no run of this sweep has an accepted status."]
