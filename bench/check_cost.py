@@ -87,7 +87,7 @@ def require_perf(workdir):
         if level > 2:
             sys.exit(f"check_cost: perf may not sample here: kernel.perf_event_paranoid is {level}, "
                      "needs <= 2 (sysctl kernel.perf_event_paranoid=2, as root)")
-    probe = subprocess.run(["perf", "record", "-q", "-o", os.path.join(workdir, "probe.data"),
+    probe = subprocess.run(["perf", "record", "-q", "-e", "cpu-clock", "-o", os.path.join(workdir, "probe.data"),
                             "--", "true"], capture_output=True, text=True)
     if probe.returncode != 0:
         sys.exit("check_cost: perf record fails here (exit code "
@@ -101,7 +101,9 @@ def check_ms(lmp, data, minima, workdir):
         f.write(tissue_commands(data) + MINIMA.format(check="fix check all dpoly/check\n",
                                                       minima=minima))
     samples = os.path.join(workdir, "perf.data")
-    subprocess.run(["perf", "record", "-q", "-F", "999", "--call-graph", "dwarf,8192", "-o",
+    # cpu-clock: the event count is then nanoseconds (the default event, where hardware counters
+    # exist, counts cycles)
+    subprocess.run(["perf", "record", "-q", "-e", "cpu-clock", "-F", "999", "--call-graph", "dwarf,8192", "-o",
                     samples, lmp, "-in", path, "-log", "none", "-screen", "none"], cwd=workdir,
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     report = subprocess.run(["perf", "report", "-i", samples, "--children", "--sort", "symbol",

@@ -349,3 +349,34 @@ TEST(Check, BinnedSearchFindsWhatBruteForceFinds)
     if (2.0 * c.largest > c.length) EXPECT_GT(with_own_image, 0);
   }
 }
+
+// Outlines in exact coordinates (as cells made on a lattice have): sides on one line and vertices
+// on the other's side are contact, not overlap, whatever vertex the ring starts at; cells that
+// share sides and still reach into each other, or hold the other with a vertex on its side,
+// overlap.
+TEST(Check, ExactContactIsNotOverlapExactOverlapIs)
+{
+  if (world_size() > 1) GTEST_SKIP() << "the geometry is tested on one rank";
+  const Box open_box{{10.0, 10.0}, {false, false}};
+  auto pairs = [&](std::vector<Point> a, std::vector<Point> b, int rotate) {
+    std::rotate(b.begin(), b.begin() + rotate % b.size(), b.end());
+    std::vector<Outline> cells(2);
+    cells[0].cell = 1;
+    cells[0].corners = a;
+    cells[1].cell = 2;
+    cells[1].corners = b;
+    return LAMMPS_NS::DPoly::interpenetrating_cells(cells, open_box).pairs;
+  };
+  const std::vector<Point> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<Point> big_square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const std::vector<Point> ell{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for (int r = 0; r < 4; r++) {
+    SCOPED_TRACE(::testing::Message() << "second ring rotated by " << r);
+    EXPECT_EQ(pairs(square, {{1, 0}, {2, 0}, {2, 1}, {1, 1}}, r), 0) << "side by side";
+    EXPECT_EQ(pairs(ell, {{1, 1}, {2, 1}, {2, 2}, {1, 2}}, r), 0) << "square in the L's notch";
+    EXPECT_EQ(pairs(square, {{0.5, 0}, {1.5, 0}, {1.5, 1}, {0.5, 1}}, r), 1)
+        << "half of one square over the other, sides on one line";
+    EXPECT_EQ(pairs(big_square, {{2, 1}, {1, 0.5}, {1, 1.5}}, r), 1)
+        << "triangle inside, one vertex on the square's side";
+  }
+}

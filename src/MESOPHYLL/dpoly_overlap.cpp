@@ -39,15 +39,39 @@ namespace DPoly {
 
   namespace {
 
+    // p on the segment uv (exactly: collinear and between its ends)
+    bool on_segment(const Point &p, const Point &u, const Point &v)
+    {
+      const double cross = (v[0] - u[0]) * (p[1] - u[1]) - (v[1] - u[1]) * (p[0] - u[0]);
+      return cross == 0.0 && p[0] >= std::min(u[0], v[0]) && p[0] <= std::max(u[0], v[0]) &&
+          p[1] >= std::min(u[1], v[1]) && p[1] <= std::max(u[1], v[1]);
+    }
+
+    // a vertex or segment midpoint of outline a (moved by shift) strictly inside polygon b:
+    // points on b's outline say nothing (outlines may touch), the others decide
+    bool holds_a_point_of(const std::vector<Point> &b, const std::vector<Point> &a,
+                          const Point &shift)
+    {
+      const int na = (int) a.size(), nb = (int) b.size();
+      for (int i = 0; i < na; i++) {
+        const Point &u = a[i], &v = a[(i + 1) % na];
+        for (const Point &p : {Point{u[0] + shift[0], u[1] + shift[1]},
+                               Point{0.5 * (u[0] + v[0]) + shift[0],
+                                     0.5 * (u[1] + v[1]) + shift[1]}}) {
+          bool on_outline = false;
+          for (int j = 0; j < nb && !on_outline; j++)
+            on_outline = on_segment(p, b[j], b[(j + 1) % nb]);
+          if (!on_outline && inside_polygon(p, b)) return true;
+        }
+      }
+      return false;
+    }
+
     struct Bounds {
       Point lo, hi;
       bool meets(const Bounds &o) const
       {
         return lo[0] <= o.hi[0] && o.lo[0] <= hi[0] && lo[1] <= o.hi[1] && o.lo[1] <= hi[1];
-      }
-      bool holds(const Bounds &o) const
-      {
-        return lo[0] <= o.lo[0] && o.hi[0] <= hi[0] && lo[1] <= o.lo[1] && o.hi[1] <= hi[1];
       }
       Bounds shifted(const Point &s) const
       {
@@ -191,13 +215,11 @@ namespace DPoly {
                              {d[0] + shift[0], d[1] + shift[1]}))
             return true;
         }
-      // no crossing: the outlines overlap only if one holds the other whole, and then it holds
-      // each of its vertices
-      if (moved_b.holds(box_a) &&
-          inside_polygon({a.corners[0][0] - shift[0], a.corners[0][1] - shift[1]}, b.corners))
-        return true;
-      return box_a.holds(moved_b) &&
-          inside_polygon({b.corners[0][0] + shift[0], b.corners[0][1] + shift[1]}, a.corners);
+      // no side crosses another: the outlines still overlap where one holds the other whole, or
+      // where they share sides (exactly collinear, e.g. lattice-made cells) and yet one reaches
+      // into the other; either way some vertex or segment midpoint lies strictly inside
+      return holds_a_point_of(b.corners, a.corners, {-shift[0], -shift[1]}) ||
+          holds_a_point_of(a.corners, b.corners, shift);
     }
 
     // the image shifts k L (k integer) along d that bring [lo_b, hi_b] onto [lo_a, hi_a]

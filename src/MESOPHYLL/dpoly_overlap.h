@@ -45,8 +45,8 @@ namespace DPoly {
     tagint first[2] = {0, 0};    // the pair with the lowest IDs (equal: a cell and its image)
   };
 
-  // Cells whose outlines overlap: a segment of one crosses a segment of the other, or one lies
-  // wholly inside the other. Every periodic image of the second cell whose bounding box meets the
+  // Cells whose outlines overlap: a segment of one crosses a segment of the other, or a vertex or
+  // segment midpoint of one lies strictly inside the other (points on its outline are skipped). Every periodic image of the second cell whose bounding box meets the
   // first's is tried (the nearest image and, in small boxes, others), a cell against its own
   // images too. Cells are binned by bounding box, so only neighbouring cells are compared, and
   // within a pair only the segments inside both boxes: the cost grows with the number of cells.

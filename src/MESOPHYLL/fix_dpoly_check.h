@@ -35,6 +35,7 @@ class FixDPolyCheck : public FixDPolyStage {
   double pressure_tolerance;
   int stop_on_failure;
   bigint minima;
+  bool triclinic_warned = false;
   // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force
   // evaluations, pairs of interpenetrating cells (appended last: tools read the others by index)
   double last[8];
