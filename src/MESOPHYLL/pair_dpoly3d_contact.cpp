@@ -131,27 +131,8 @@ void PairDPoly3dContact::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-double PairDPoly3dContact::single(int i, int j, int itype, int jtype, double rsq,
-                                  double /*factor_coul*/, double /*factor_lj*/, double &fforce)
+double PairDPoly3dContact::contact_distance(int i, int j)
 {
   const DPoly3d::VertexState state = vertex_state_3d.get(atom, error, STYLE);
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
-  fforce = 0.0;
-  if (!interacts(i, j, rsq, s)) return 0.0;
-  const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);
-  fforce = law.fpair;
-  return law.energy;
-}
-
-void PairDPoly3dContact::born_matrix(int i, int j, int itype, int jtype, double rsq,
-                                     double /*factor_coul*/, double /*factor_lj*/, double &du,
-                                     double &du2)
-{
-  const DPoly3d::VertexState state = vertex_state_3d.get(atom, error, STYLE);
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
-  du = du2 = 0.0;
-  if (!interacts(i, j, rsq, s)) return;
-  const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);
-  du = law.first;
-  du2 = law.second;
+  return 0.5 * (state.diameter[i] + state.diameter[j]);
 }

@@ -27,15 +27,17 @@ class PairDPoly3dContact : public PairDPolyContact {
   PairDPoly3dContact(class LAMMPS *);
   void compute(int, int) override;
   void init_style() override;
-  double single(int, int, int, int, double, double, double, double &) override;
-  void born_matrix(int, int, int, int, double, double, double, double &, double &) override;
+
+ protected:
+  // single() and born_matrix() are the 2d style's, with these two answers of this style
+  double contact_distance(int i, int j) override;
+  // as acts_between() for local atoms i and j, one of them owned, that overlap
+  bool interacts(int i, int j, double rsq, double s) const override;
 
  private:
   DPoly3d::VertexStateCache vertex_state_3d;
   // whether owned atom i and local atom j interact at all (not across an edge of one cell)
   bool acts_between(int i, int j) const;
-  // as acts_between() for local atoms i and j, one of them owned, that overlap
-  bool interacts(int i, int j, double rsq, double s) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -206,11 +206,16 @@ bool PairDPolyContact::interacts(int i, int j, double rsq, double s) const
   return !skip(owned, other, links.prev, links.next);
 }
 
+double PairDPolyContact::contact_distance(int i, int j)
+{
+  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
+  return 0.5 * (state.diameter[i] + state.diameter[j]);
+}
+
 double PairDPolyContact::single(int i, int j, int itype, int jtype, double rsq,
                                 double /*factor_coul*/, double /*factor_lj*/, double &fforce)
 {
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  const double s = contact_distance(i, j);
   fforce = 0.0;
   if (!interacts(i, j, rsq, s)) return 0.0;
   const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);
@@ -224,8 +229,7 @@ void PairDPolyContact::born_matrix(int i, int j, int itype, int jtype, double rs
                                    double /*factor_coul*/, double /*factor_lj*/, double &du,
                                    double &du2)
 {
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Pair style dpoly/contact");
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  const double s = contact_distance(i, j);
   du = du2 = 0.0;
   if (!interacts(i, j, rsq, s)) return;
   const DPoly::DistanceLaw law = DPoly::contact_law(contact_stiffness[itype][jtype], sqrt(rsq), s);

@@ -50,7 +50,10 @@ class PairDPolyContact : public Pair {
   std::string style_name = "dpoly/contact";    // as messages name the style
   void allocate();
   bool skip(int i, int j, tagint prev, tagint next) const;
-  bool interacts(int i, int j, double rsq, double s) const;
+  // the contact distance s = (sigma_i + sigma_j)/2 of local atoms i and j, and whether they
+  // interact at r^2 = rsq: what single() and born_matrix() ask (the 3d style answers for itself)
+  virtual double contact_distance(int i, int j);
+  virtual bool interacts(int i, int j, double rsq, double s) const;
 };
 
 }    // namespace LAMMPS_NS
