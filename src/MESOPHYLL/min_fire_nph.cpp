@@ -36,8 +36,8 @@ static constexpr double BOX_CHANGE_LIMIT = 4.0;
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
-    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), velocity(nullptr), box_length(nullptr),
-    box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
+    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), velocity(nullptr),
+    box_length(nullptr), box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
 {
   // Min::setup() refuses fix box/relax with damped dynamics because FIRE and quickmin ignore
   // the box; this style moves the box itself, so it declares itself box-aware.
