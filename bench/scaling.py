@@ -3,6 +3,7 @@
 thermo on oversubscribed ranks.
 
     bench/scaling.py [--lmp build/lmp] [--cells 64 256 1024] [--ranks 1 2] [--steps 3]
+                     [--fnorm two|rms] [--ftol F]
                      [--check-cells 64] [--check-ranks 4 8] [--check-steps 2]
                      [--check-rtol 1e-9]
                      [--base examples/tissue/voronoi_N64.data] [--keep DIR [--report-only]]
@@ -11,7 +12,10 @@ thermo on oversubscribed ranks.
 Tissues: N = 64 k^2 cells, k x k periodic copies of --base made by tools/replicate_tissue.py
 (the same tissue at every size: what changes is the size, not the cells). Each runs the main
 example, examples/mesophyll/in.mesophyll -var tissue FILE, for --steps minimizations (the first
-relaxes the initial tissue to P0; each later one is a growth step), no restart files. Per
+relaxes the initial tissue to P0; each later one is a growth step), no restart files, with its
+stopping rule (--fnorm two: LAMMPS's 2-norm of all forces below --ftol, default 1e-10, the
+example's default; --fnorm rms: the root mean square force per degree of freedom below --ftol,
+default 1e-12, the same at every size; in.mesophyll's -var fnorm and -var ftol). Per
 minimization: FIRE iterations, vertices, the loop's wall seconds and its CPU seconds (LAMMPS's
 "% CPU use" x wall x ranks), CPU microseconds per iteration per vertex, LAMMPS's per-rank memory
 (the largest "Per MPI rank memory allocation", its mean x ranks per vertex, in bytes). The
@@ -84,7 +88,8 @@ def develop(args, data, cells, ranks, steps, work):
     """Runs in.mesophyll on data for steps minimizations; returns (Run, CPU seconds or None).
     A finished run of the same size, ranks and steps already in the --keep folder is read
     instead (None, None with --report-only when there is none)."""
-    folder = os.path.join(work, f"N{cells}_np{ranks}_s{steps}")
+    rule = "" if args.fnorm == "two" and args.ftol == 1e-10 else f"_{args.fnorm}{args.ftol:g}"
+    folder = os.path.join(work, f"N{cells}_np{ranks}_s{steps}{rule}")
     log, cpu_file = os.path.join(folder, "log.scaling"), os.path.join(folder, "process_cpu_s")
     text = open(log).read() if os.path.exists(log) else ""
     finished = "Total wall time" in text
@@ -99,7 +104,7 @@ def develop(args, data, cells, ranks, steps, work):
         return None, None
     else:
         variables = {"N": cells, "tissue": os.path.basename(data), "steps": steps,
-                     "restart_every": 0, "phi_stop": 0}
+                     "restart_every": 0, "phi_stop": 0, "fnorm": args.fnorm, "ftol": args.ftol}
         cpu = mesophyll_run.children_cpu_seconds()
         run = mesophyll_run.run(args.lmp, "in.mesophyll", folder, variables, ranks=ranks,
                                 files=[data], log="log.scaling", capture=True)
@@ -112,7 +117,7 @@ def develop(args, data, cells, ranks, steps, work):
     return run, cpu
 
 
-def rows_of(cells, ranks, run):
+def rows_of(cells, ranks, run, rule):
     memory = [tuple(float(v) for v in m.groups()) for m in MEMORY.finditer(run.log)]
     largest = max(memory, key=lambda m: m[2])
     rows = []
@@ -125,7 +130,7 @@ def rows_of(cells, ranks, run):
                      "cpu_us_per_iteration_vertex": round(1e6 * cpu / (iterations * loop.atoms), 4),
                      "memory_mb_per_rank": largest[2],
                      "memory_bytes_per_vertex": round(largest[1] * ranks * 2**20 / loop.atoms),
-                     "value": "", "note": ""})
+                     "value": "", "note": rule})
     return rows
 
 
@@ -179,7 +184,7 @@ def check_ranks(args, data, work):
     return results
 
 
-def plot(rows, path, ranks_list):
+def plot(rows, path, ranks_list, rule):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -205,7 +210,8 @@ def plot(rows, path, ranks_list):
         ax.set_title(title)
         ax.legend(fontsize=8)
         ax.grid(True, which="both", alpha=0.3)
-    fig.suptitle(f"MESOPHYLL growth-step scaling ({platform.node()}; machine may be shared)")
+    fig.suptitle(f"MESOPHYLL growth-step scaling, {rule} ({platform.node()}; machine may be "
+                 f"shared)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
@@ -230,9 +236,19 @@ def main():
     p.add_argument("--report-only", action="store_true",
                    help="run nothing: report the runs in --keep (also killed ones with a growth "
                         "step done, said so), leave out the rest")
+    p.add_argument("--fnorm", choices=["two", "rms"], default="two",
+                   help="in.mesophyll's stopping rule: two (LAMMPS's 2-norm, the default) or "
+                        "rms (per degree of freedom)")
+    p.add_argument("--ftol", type=float, default=None,
+                   help="force tolerance (default 1e-10 with --fnorm two, 1e-12 with rms)")
     p.add_argument("--csv", default=os.path.join(HERE, "results", "scaling.csv"))
     p.add_argument("--png", default=os.path.join(HERE, "results", "scaling.png"))
     args = p.parse_args()
+    if args.ftol is None:
+        args.ftol = 1e-10 if args.fnorm == "two" else 1e-12
+    if not args.ftol > 0.0:
+        p.error(f"--ftol must be positive, got {args.ftol}")
+    rule = f"fnorm {args.fnorm} ftol {args.ftol:g}"
     if args.steps < 2:
         p.error(f"--steps must be at least 2 (the relaxation and a growth step), got {args.steps}")
     if args.check_steps < 1:
@@ -256,7 +272,7 @@ def main():
             run, cpu = develop(args, data, cells, ranks, args.steps, work)
             if run is None:
                 continue
-            for r in rows_of(cells, ranks, run):
+            for r in rows_of(cells, ranks, run, rule):
                 rows.append(r)
                 print(f"{cells:>6} {ranks:>5} {r['minimization']:>4} {r['vertices']:>8} "
                       f"{r['iterations']:>7} {r['wall_s']:>8.1f} {r['cpu_s']:>8.1f} "
@@ -322,7 +338,7 @@ def main():
         w = csv.DictWriter(f, FIELDS, restval="")
         w.writeheader()
         w.writerows(rows)
-    plot(rows, args.png, args.ranks)
+    plot(rows, args.png, args.ranks, rule)
     print(f"\nwrote {args.csv} and {args.png}; runs in {work}")
     if args.check_ranks and not ok:
         sys.exit("scaling: the oversubscribed runs disagree with 1 rank (above)")

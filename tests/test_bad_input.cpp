@@ -575,6 +575,9 @@ std::vector<Case> cases()
   keyword_case("FireNphSteer", "min_modify steer speed (fire/nph)",
                "min_style fire/nph\nmin_modify steer speed\n",
                "min_modify steer must be force or mass, got speed");
+  keyword_case("FireNphRms", "min_modify rms maybe (fire/nph)",
+               "min_style fire/nph\nmin_modify rms maybe\n",
+               "Expected boolean parameter instead of 'maybe'");
   keyword_case("GrowBox", "fix mesophyll/grow box free", "fix grow all mesophyll/grow box free\n",
                "box must be 'relax' or 'fixed', got 'free'");
   keyword_case("GrowWithoutBoxRelax", "fix mesophyll/grow without fix box/relax",
@@ -628,6 +631,13 @@ std::vector<Case> cases()
       },
       "were cut short by min_modify dmax (0.1): the timestep 100 is beyond the stability limit "
       "of the stiffest mode (about 2/omega_max); lower it");
+  minimizer_case(
+      "FireNphRmsNormMax", "min_modify rms yes with norm max",
+      []() {
+        return tissue16_commands() + "min_modify norm max rms yes\n" + MINIMIZE_TISSUE;
+      },
+      "min_style fire/nph: min_modify rms yes is a root mean square, which needs min_modify "
+      "norm two, not norm max");
   minimizer_case(
       "FireNphBoxMassTiny", "min_modify boxmass 1e-12",
       []() {

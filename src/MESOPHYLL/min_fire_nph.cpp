@@ -36,8 +36,8 @@ static constexpr double BOX_CHANGE_LIMIT = 4.0;
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
-    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), velocity(nullptr), box_length(nullptr),
-    box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
+    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), velocity(nullptr),
+    box_length(nullptr), box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
 {
   // Min::setup() refuses fix box/relax with damped dynamics because FIRE and quickmin ignore
   // the box; this style moves the box itself, so it declares itself box-aware.
@@ -75,6 +75,11 @@ int MinFireNph::modify_param(int narg, char **arg)
       error->all(FLERR, "min_modify steer must be force or mass, got {}", arg[1]);
     return 2;
   }
+  if (strcmp(arg[0], "rms") == 0) {
+    if (narg < 2) utils::missing_cmd_args(FLERR, "min_modify rms", error);
+    rms_tolerance = utils::logical(FLERR, arg[1], false, lmp) == 1;
+    return 2;
+  }
   return 0;
 }
 
@@ -89,6 +94,11 @@ void MinFireNph::init()
   if (abcflag) error->all(FLERR, "min_style fire/nph does not support min_modify abcfire yes");
   if (integrator != EULERIMPLICIT)
     error->all(FLERR, "min_style fire/nph supports only min_modify integrator eulerimplicit");
+  if (rms_tolerance && normstyle != TWO)
+    error->all(FLERR,
+               "min_style fire/nph: min_modify rms yes is a root mean square, which needs "
+               "min_modify norm two, not norm {}",
+               normstyle == MAX ? "max" : "inf");
 
   dt = update->dt;
   dtmax = tmax * dt;
@@ -154,10 +164,10 @@ void MinFireNph::setup_style()
     utils::logmesg(lmp,
                    "  Parameters for fire/nph: dmax {} delaystep {} dtgrow {} dtshrink {} "
                    "alpha0 {} alphashrink {} tmax {} tmin {} halfstepback {} box dof {} "
-                   "boxmass {} steer {}\n",
+                   "boxmass {} steer {} rms {}\n",
                    dmax, delaystep, dtgrow, dtshrink, alpha0, alphashrink, tmax, tmin,
                    halfstepback_flag ? "yes" : "no", nextra_global, boxmass_scale,
-                   steer_by_mass ? "mass" : "force");
+                   steer_by_mass ? "mass" : "force", rms_tolerance ? "yes" : "no");
 }
 
 /* ----------------------------------------------------------------------
@@ -197,6 +207,25 @@ MinFireNph::Power MinFireNph::vdotf() const
     power.box += box_power;
   }
   return power;
+}
+
+/* ----------------------------------------------------------------------
+   mean square force per degree of freedom: atom coordinates (dimension per atom) and box
+   lengths, the box's force being that on its length, -dH/dq_k = fextra_k / L_k. Unlike the
+   2-norm it does not grow with the system: a tissue copied k x k times has the same value
+------------------------------------------------------------------------- */
+
+double MinFireNph::rms_force_sqr() const
+{
+  double local = 0.0;
+  for (int i = 0; i < nvec; i++) local += fvec[i] * fvec[i];
+  double sum = global_sum(local);
+  for (int k = 0; k < nextra_global; k++) {
+    const double fq = fextra[k] / box_length[k];
+    sum += fq * fq;
+  }
+  const double dof = domain->dimension * static_cast<double>(atom->natoms) + nextra_global;
+  return dof > 0.0 ? sum / dof : 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -354,7 +383,9 @@ int MinFireNph::iterate(int maxiter)
 
     if (update->ftol > 0.0) {
       double fdotf;
-      if (normstyle == MAX)
+      if (rms_tolerance)
+        fdotf = rms_force_sqr();
+      else if (normstyle == MAX)
         fdotf = fnorm_max();
       else if (normstyle == INF)
         fdotf = fnorm_inf();

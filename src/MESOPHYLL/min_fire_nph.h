@@ -36,6 +36,7 @@ class MinFireNph : public Min {
  private:
   double boxmass_scale;    // box mass relative to that of an affine dilation
   bool steer_by_mass;      // FIRE's steering in mass-weighted coordinates (min_modify steer mass)
+  bool rms_tolerance;      // ftol bounds the force per degree of freedom (min_modify rms yes)
 
   double dt, dtmax, dtmin, alpha;
   double last_drift_time;    // time of the last drift, after dmax and vmax shortened it
@@ -70,6 +71,7 @@ class MinFireNph : public Min {
 
   double global_sum(double) const;
   Power vdotf() const;
+  double rms_force_sqr() const;
   void zero_velocities();
   double mix_velocities();
   // mass of owned atom i (per-atom rmass or per-type mass)
