@@ -109,6 +109,7 @@ ComputeDPoly3dSlice::Slices ComputeDPoly3dSlice::slice()
   std::vector<VertexRecord> mine;
   std::vector<DPoly3d::SliceFace> my_faces;
   for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & cells->groupbit)) continue;
     const tagint self = atom->tag[i];
     VertexRecord r;
     r.vertex.tag = self;
@@ -123,14 +124,11 @@ ComputeDPoly3dSlice::Slices ComputeDPoly3dSlice::slice()
   }
   std::vector<VertexRecord> records = DPoly::gather_on_all_ranks(std::move(mine), world);
   std::vector<DPoly3d::SliceFace> faces = DPoly::gather_on_all_ranks(std::move(my_faces), world);
-  // the same order on any number of ranks
+  // ID order, so that the cells' mean diameters are the same sums on any number of ranks (the
+  // faces' order does not matter: the outlines are chained through a map of edges)
   std::sort(records.begin(), records.end(), [](const VertexRecord &a, const VertexRecord &b) {
     return a.vertex.tag < b.vertex.tag;
   });
-  std::sort(faces.begin(), faces.end(),
-            [](const DPoly3d::SliceFace &a, const DPoly3d::SliceFace &b) {
-              return a.b < b.b || (a.b == b.b && (a.a < b.a || (a.a == b.a && a.c < b.c)));
-            });
 
   std::vector<DPoly3d::SliceVertex> vertices;
   std::map<tagint, std::pair<double, int>> diameters;    // per cell: sum, count

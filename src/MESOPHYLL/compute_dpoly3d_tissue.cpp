@@ -111,6 +111,11 @@ void ComputeDPoly3dTissue::compute_array()
   array = per_cell;
 }
 
+int ComputeDPoly3dTissue::lock_length()
+{
+  return cells ? cells->ncells() : 0;
+}
+
 double ComputeDPoly3dTissue::memory_usage()
 {
   return sizeof(double) * (NVALUES + (double) NCOLUMNS * rows);

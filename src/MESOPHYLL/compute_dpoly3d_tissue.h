@@ -27,6 +27,8 @@ class ComputeDPoly3dTissue : public Compute {
   void compute_vector() override;
   void compute_array() override;
   double memory_usage() override;
+  // the per-cell array's rows, which fix ave/time asks a compute of variable length for
+  int lock_length() override;
 
   // S^3 / (36 pi V^2): 1 for a sphere, larger for any other closed surface
   static double shape_parameter(double surface, double volume);
