@@ -172,6 +172,22 @@ TEST(Slice3d, PlanesThroughVerticesEdgesAndFaces)
   EXPECT_NEAR(value(*faces, "slice", PHI), 4.0 / 500.0, 1.0e-15);
 }
 
+// A cup: a 4 x 4 x 2 block with a 2 x 2 well 1 deep in its top. V = 28, S = 72. Cut through the
+// well (z = 5.5) it is one cross-section, the 4 x 4 square, with one hole, the well's 2 x 2
+// square: phi counts 16 - 4, the cross-section's row and calA its outline alone.
+TEST(Slice3d, CupGivesACrossSectionWithAHole)
+{
+  auto s = measured("cup.data", "offset 0.55");
+  EXPECT_NEAR(value(*s, "tissue", PHI), 28.0 / 1000.0, 1.0e-15);
+  EXPECT_NEAR(value(*s, "tissue", SHAPE), std::pow(72.0, 3) / (36.0 * PI * 28.0 * 28.0), 1.0e-12);
+  EXPECT_NEAR(value(*s, "slice", PHI), 12.0 / 100.0, 1.0e-15);
+  EXPECT_EQ(value(*s, "slice", BONDS_OR_SECTIONS), 1.0);
+  EXPECT_EQ(value(*s, "slice", CELLS_OR_HOLES), 1.0);
+  EXPECT_NEAR(value(*s, "sections", 1), 16.0, 1.0e-13);
+  EXPECT_NEAR(value(*s, "sections", 2), 16.0, 1.0e-13);
+  EXPECT_NEAR(value(*s, "slice", SHAPE), 4.0 / PI, 1.0e-13);
+}
+
 // Several planes: phi is the cut area over all planes' box cross-sections; 10 planes at
 // z = 0.5, 1.5, ... cut the cube (4 < z < 6) twice.
 TEST(Slice3d, SeveralPlanesAreAveraged)
