@@ -3,7 +3,7 @@
 (tests/make_test_data_slices.py) load back with vtkXMLPolyDataReader with the right counts,
 positions and per-cell volume, surface and S^3/(36 pi V^2); a cube across every periodic
 boundary is drawn whole inside the box; the slice PNG is written and its outlines (VTK's cutter)
-are the cubes' 2 x 2 squares. Exit 77 (skip) only if a Debian package is missing."""
+are the cubes' 2 x 2 squares, at a periodic image of the plane too. Exit 77 (skip) only if a Debian package is missing."""
 import contextlib
 import io
 import math
@@ -128,6 +128,9 @@ class WriteVTK3d(unittest.TestCase):
                 perimeter = np.sum(np.hypot(np.diff(x, append=x[0]), np.diff(y, append=y[0])))
                 self.assertAlmostEqual(area, 4.0, places=12)
                 self.assertAlmostEqual(perimeter, 8.0, places=12)
+            # frame 2's cubes, drawn at z in [-1, 1], meet the plane z = 9.5 at its image -0.5
+            below = write_vtk.slice_outlines(frame, faces, 0.95)
+            self.assertEqual(len(below), 0 if frame.timestep == 0 else 2)
 
     def test_missing_columns_are_named(self):
         bad = os.path.join(self.dir, "bad.dump")
