@@ -217,13 +217,14 @@ TEST(Slice3d, CellAcrossThePeriodicBoundary)
 // Two cubes 0.3 apart, vertex diameter 0.4: their cross-sections touch when the gap is below
 // contact times 0.4: inside the box, with both cubes moved across its boundary (unwrapped, still
 // side by side), and with the cubes moved apart so that they face each other only through the
-// periodic boundary (x in [0.15, 2.15] and [7.85, 9.85]).
+// periodic boundary (x in [0.15, 2.15] and [7.85, 9.85]; the second one's unwrapped positions
+// two boxes further on).
 TEST(Slice3d, ContactDistanceDecidesNeighbours)
 {
   const std::vector<std::string> moves = {"", "displace_atoms all move 4.0 0 0 units box\n",
                                           "group first molecule 1\ngroup second molecule 2\n"
                                           "displace_atoms first move -2.7 0 0 units "
-                                          "box\ndisplace_atoms second move 2.7 0 0 units box\n"};
+                                          "box\ndisplace_atoms second move 22.7 0 0 units box\n"};
   for (const std::string &move : moves) {
     for (const auto &c :
          {std::make_pair("1.0", 1.0), std::make_pair("0.8", 1.0), std::make_pair("0.7", 0.0)}) {
