@@ -21,7 +21,22 @@ counter-clockwise, the cell's vertex mean inside the box), with
 The bonds files hold every adhesive bond as a line (its second end moved to the first one's
 periodic image), with cell data atom1, atom2, cell1, cell2, length and, with sigma, r_over_s.
 Draw the vertex disks with ParaView's Glyph filter (2D glyph circle, scale by sigma, factor 1).
-Needs python3-vtk9 and python3-numpy (Debian).
+
+3d cells (deformable polyhedra): with --faces DATA the dump is a dump of the vertices of 3d cells
+(columns id mol xu yu zu, unwrapped) and DATA the data file they were read from (its Angles are
+the faces, counter-clockwise from outside):
+
+    write_vtk.py cells3d.dump --faces cells3d.data [--out vtk/cells3d]
+                 [--slice-png slice.png] [--slice-offset 0.5]
+
+writes <out>_cells3d_<k>.vtp per frame and <out>_cells3d.pvd: every face a triangle, each cell
+moved by whole box lengths so that its vertex mean is inside the box, with
+  cell data:  mol, and of the triangle's cell volume, surface and shape = S^3/(36 pi V^2);
+  point data: id, mol;
+  field data: timestep, box_lo, box_length.
+--slice-png draws the last frame's cross-sections by the plane z = zlo + offset Lz (VTK's own
+cutter, on every periodic image of the plane), one colour per cell, over the box.
+Needs python3-vtk9 and python3-numpy (Debian); python3-matplotlib for --slice-png.
 """
 import argparse
 import os
@@ -164,6 +179,176 @@ def write_pvd(path, entries):
         f.write("  </Collection>\n</VTKFile>\n")
 
 
+def read_faces(data_path):
+    """The faces of 3d cells from a data file's Angles section: (m, 3) atom IDs."""
+    import lammps_data
+    data = lammps_data.DataFile(data_path)
+    if "Angles" not in data.sections:
+        raise SystemExit(f"{data_path}: no Angles section (the faces of 3d cells)")
+    return np.array([[int(w) for w in words[2:5]] for words in data.sections["Angles"]],
+                    dtype=np.int64)
+
+
+class Frame3d:
+    """One dump frame of 3d cells: box lo and lengths, vertex IDs, cells and unwrapped positions,
+    each cell moved by whole box lengths so that its vertex mean is inside the box."""
+
+    def __init__(self, timestep, bounds, columns, rows):
+        self.timestep = timestep
+        self.lo = np.array([b[0] for b in bounds])
+        self.length = np.array([b[1] - b[0] for b in bounds])
+        for need in ("id", "mol", "xu", "yu", "zu"):
+            if need not in columns:
+                raise ValueError(f"dump frame at step {timestep} has no column '{need}' "
+                                 f"(columns: {' '.join(columns)}); dump id mol xu yu zu")
+        data = np.array([r.split() for r in rows], dtype=float).reshape(len(rows), len(columns))
+        col = {name: data[:, j] for j, name in enumerate(columns)}
+        self.ids = col["id"].astype(np.int64)
+        self.mol = col["mol"].astype(np.int64)
+        self.pos = np.column_stack([col["xu"], col["yu"], col["zu"]])
+        for m in np.unique(self.mol):
+            rows_of_cell = self.mol == m
+            centre = self.pos[rows_of_cell].mean(axis=0)
+            self.pos[rows_of_cell] -= np.floor((centre - self.lo) / self.length) * self.length
+        self.row_of = {int(t): r for r, t in enumerate(self.ids)}
+
+    def face_rows(self, faces):
+        try:
+            return np.vectorize(lambda t: self.row_of[int(t)])(faces)
+        except KeyError as missing:
+            raise ValueError(f"step {self.timestep}: face vertex {missing} is not in the dump")
+
+
+def read_frames3d(path):
+    for block in mf._dump_blocks(path):
+        yield Frame3d(*block)
+
+
+def cell_measures(frame, face_rows):
+    """Per face: its cell's volume (divergence theorem), surface area and S^3/(36 pi V^2)."""
+    a, b, c = (frame.pos[face_rows[:, k]] for k in range(3))
+    face_volume = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
+    face_area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    cell = frame.mol[face_rows[:, 1]]
+    volume, surface = {}, {}
+    for m in np.unique(cell):
+        volume[m] = face_volume[cell == m].sum()
+        surface[m] = face_area[cell == m].sum()
+    v = np.array([volume[m] for m in cell])
+    s = np.array([surface[m] for m in cell])
+    return cell, v, s, s ** 3 / (36.0 * np.pi * v ** 2)
+
+
+def cells3d_polydata(frame, faces):
+    """vtkPolyData of one frame's 3d cells, every face a triangle (see the module's doc)."""
+    rows = frame.face_rows(faces)
+    points = vtk.vtkPoints()
+    points.SetData(numpy_support.numpy_to_vtk(np.ascontiguousarray(frame.pos), deep=True))
+    poly = vtk.vtkPolyData()
+    poly.SetPoints(points)
+    poly.SetPolys(_cell_array(rows.ravel(), np.arange(0, 3 * len(rows) + 1, 3)))
+    cell, volume, surface, shape = cell_measures(frame, rows)
+    cd = poly.GetCellData()
+    cd.AddArray(_array("mol", cell))
+    cd.AddArray(_array("volume", volume))
+    cd.AddArray(_array("surface", surface))
+    cd.AddArray(_array("shape", shape))
+    pd = poly.GetPointData()
+    pd.AddArray(_array("id", frame.ids))
+    pd.AddArray(_array("mol", frame.mol))
+    fd = poly.GetFieldData()
+    fd.AddArray(_array("timestep", np.array([frame.timestep])))
+    fd.AddArray(_array("box_lo", frame.lo))
+    fd.AddArray(_array("box_length", frame.length))
+    return poly
+
+
+def slice_outlines(frame, faces, offset):
+    """Cross-sections of every cell by the plane z = zlo + offset Lz and its periodic images:
+    a list of (cell, closed (n, 2) outline), cut and chained by VTK (vtkCutter, vtkStripper)."""
+    rows = frame.face_rows(faces)
+    cell_of_face = frame.mol[rows[:, 1]]
+    height = frame.lo[2] + offset * frame.length[2]
+    outlines = []
+    for m in np.unique(cell_of_face):
+        one = vtk.vtkPolyData()
+        points = vtk.vtkPoints()
+        points.SetData(numpy_support.numpy_to_vtk(np.ascontiguousarray(frame.pos), deep=True))
+        one.SetPoints(points)
+        mine = rows[cell_of_face == m]
+        one.SetPolys(_cell_array(mine.ravel(), np.arange(0, 3 * len(mine) + 1, 3)))
+        zmin, zmax = frame.pos[mine.ravel(), 2].min(), frame.pos[mine.ravel(), 2].max()
+        for image in range(int(np.floor((zmin - height) / frame.length[2])),
+                           int(np.floor((zmax - height) / frame.length[2])) + 1):
+            plane = vtk.vtkPlane()
+            plane.SetOrigin(0.0, 0.0, height + image * frame.length[2])
+            plane.SetNormal(0.0, 0.0, 1.0)
+            cutter = vtk.vtkCutter()
+            cutter.SetCutFunction(plane)
+            cutter.SetInputData(one)
+            stripper = vtk.vtkStripper()
+            stripper.SetInputConnection(cutter.GetOutputPort())
+            stripper.JoinContiguousSegmentsOn()
+            stripper.Update()
+            out = stripper.GetOutput()
+            if out.GetNumberOfPoints() == 0:
+                continue
+            xyz = numpy_support.vtk_to_numpy(out.GetPoints().GetData())
+            lines = out.GetLines()
+            lines.InitTraversal()
+            ids = vtk.vtkIdList()
+            while lines.GetNextCell(ids):
+                loop = [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
+                if len(loop) > 1 and loop[0] == loop[-1]:
+                    loop = loop[:-1]
+                outlines.append((int(m), xyz[loop, :2].copy()))
+    return outlines
+
+
+def slice_png(path, frame, outlines, offset):
+    """The outlines over the box, one colour per cell, with their periodic images."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon
+    fig, ax = plt.subplots(figsize=(6, 6 * frame.length[1] / frame.length[0]))
+    colours = plt.get_cmap("tab20")
+    for cell, xy in outlines:
+        for i in (-1, 0, 1):
+            for j in (-1, 0, 1):
+                shift = np.array([i * frame.length[0], j * frame.length[1]])
+                ax.add_patch(Polygon(xy + shift, closed=True, facecolor=colours(cell % 20),
+                                     edgecolor="black", linewidth=0.6, alpha=0.85))
+    ax.set_xlim(frame.lo[0], frame.lo[0] + frame.length[0])
+    ax.set_ylim(frame.lo[1], frame.lo[1] + frame.length[1])
+    ax.set_aspect("equal")
+    ax.set_title(f"step {frame.timestep}: cross-sections at z = zlo + {offset:g} Lz "
+                 f"({len(outlines)} outlines)")
+    fig.savefig(path, dpi=150, bbox_inches="tight")
+    plt.close(fig)
+
+
+def main3d(a, p):
+    faces = read_faces(a.faces)
+    out = a.out or os.path.join("vtk", os.path.splitext(os.path.basename(a.dump))[0])
+    os.makedirs(os.path.dirname(out) or ".", exist_ok=True)
+    base = os.path.basename(out)
+    series, frame = [], None
+    for k, frame in enumerate(read_frames3d(a.dump)):
+        name = f"{base}_cells3d_{k:04d}.vtp"
+        write_polydata(os.path.join(os.path.dirname(out), name), cells3d_polydata(frame, faces))
+        series.append((frame.timestep, name))
+    if frame is None:
+        p.error(f"{a.dump}: no complete frame")
+    write_pvd(f"{out}_cells3d.pvd", series)
+    print(f"wrote {len(series)} frames: {out}_cells3d.pvd ({out}_cells3d_*.vtp)")
+    if a.slice_png:
+        outlines = slice_outlines(frame, faces, a.slice_offset)
+        slice_png(a.slice_png, frame, outlines, a.slice_offset)
+        print(f"wrote {a.slice_png}: {len(outlines)} cross-sections of step {frame.timestep}")
+    return 0
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -175,7 +360,17 @@ def main(argv=None):
     p.add_argument("--adhesion-type", type=int, default=2, help="bond type of adhesion (2)")
     p.add_argument("--sigma", type=float, default=None,
                    help="vertex diameter where the dump has no d_sigma column")
+    p.add_argument("--faces", default=None,
+                   help="3d cells: the data file whose Angles are the faces (dump: id mol xu yu zu)")
+    p.add_argument("--slice-png", default=None,
+                   help="3d cells: PNG of the last frame's cross-sections by a plane z = const")
+    p.add_argument("--slice-offset", type=float, default=0.5,
+                   help="3d cells: height of that plane above zlo, in box heights (default 0.5)")
     a = p.parse_args(argv)
+    if a.faces:
+        if not 0.0 <= a.slice_offset < 1.0:
+            p.error(f"--slice-offset must be in [0, 1), got {a.slice_offset}")
+        return main3d(a, p)
 
     out = a.out or os.path.join("vtk", os.path.splitext(os.path.basename(a.dump))[0])
     os.makedirs(os.path.dirname(out) or ".", exist_ok=True)

@@ -62,7 +62,7 @@ class FixDPoly3dCells : public Fix, public DPoly::CellHub {
 
   // Per-cell values, identical on every rank, current after the last force evaluation.
   int ncells() const override { return (int) cell_ids.size(); }
-  tagint cell_id(int cell) const override { return cell_ids[cell]; }
+  tagint cell_id(int cell) const override { return cell_ids[cell]; }    // the cell's molecule ID
   double volume(int cell) const { return volumes[cell]; }
   double surface_area(int cell) const { return surface_areas[cell]; }
   double preferred_volume(int cell) const { return preferred_volumes[cell]; }

@@ -1,0 +1,48 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   MESOPHYLL package for LAMMPS. Distributed under the GNU General Public
+   License, version 2 or later, like LAMMPS itself.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(dpoly3d/tissue,ComputeDPoly3dTissue);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_DPOLY3D_TISSUE_H
+#define LMP_COMPUTE_DPOLY3D_TISSUE_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+// The 3d tissue (doc/Howto_polyhedra.rst, "Observables"): volume fraction, 3d shape parameter
+// S^3/(36 pi V^2), contact number from the adhesive bonds; globally and per cell. Volumes and
+// surface areas are the ones fix dpoly3d/cells measured at the last force evaluation.
+class ComputeDPoly3dTissue : public Compute {
+ public:
+  ComputeDPoly3dTissue(class LAMMPS *, int, char **);
+  ~ComputeDPoly3dTissue() override;
+  void init() override;
+  void compute_vector() override;
+  void compute_array() override;
+  double memory_usage() override;
+  // the per-cell array's rows, which fix ave/time asks a compute of variable length for
+  int lock_length() override;
+
+  // S^3 / (36 pi V^2): 1 for a sphere, larger for any other closed surface
+  static double shape_parameter(double surface, double volume);
+
+ private:
+  class FixDPoly3dCells *cells;
+  double *values;
+  double **per_cell;
+  int rows;
+
+  void require_measured_cells();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
