@@ -15,9 +15,11 @@
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
+#include "fix_dpoly_stage.h"
 #include "force.h"
 #include "group.h"
 #include "math_extra.h"
+#include "min.h"
 #include "modify.h"
 #include "update.h"
 
@@ -132,6 +134,7 @@ void FixDPoly3dCells::init()
                "{} {}: the volume term must count in both energy and virial; do not use "
                "fix_modify energy no or virial no with it",
                STYLE, id);
+  FixDPolyStage::stages_of(lmp, this);    // stops now for a stage on another group
 }
 
 // before the first force evaluation of a run, so that every style sees checked cells
@@ -172,6 +175,29 @@ void FixDPoly3dCells::post_force(int vflag)
 {
   measure_cells();
   apply_volume_forces(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
+   order, each seeing the ghost atoms with what the one before changed. The next run re-reads
+   the cells (and their v0) when it sets up. Min::cleanup() reads the minimizer's vectors after
+   this, so they must cover the atoms as they are now.
+------------------------------------------------------------------------- */
+
+void FixDPoly3dCells::post_run()
+{
+  int changed = FixDPolyStage::NOTHING;
+  for (FixDPolyStage *stage : FixDPolyStage::stages_of(lmp, this)) {
+    if (!stage->acts_after(update->whichflag)) continue;
+    const int change = stage->act();
+    if (change & (FixDPolyStage::BONDS | FixDPolyStage::RINGS))
+      DPoly::rebuild_special_and_ghosts(lmp);
+    else if (change & FixDPolyStage::STATE)
+      DPoly::refresh_ghosts(lmp);
+    changed |= change;
+  }
+  if (changed != FixDPolyStage::NOTHING && update->whichflag == 2)
+    update->minimize->reset_vectors();
 }
 
 void FixDPoly3dCells::refresh_cells()

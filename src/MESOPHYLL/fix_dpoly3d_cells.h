@@ -25,7 +25,8 @@ namespace LAMMPS_NS {
 // LAMMPS angles a b c counter-clockwise from outside, close one surface), checks their surfaces,
 // edges and hinges when a run starts, and adds the per-cell volume term
 //   U_volume = (eps_v/2) (V/V0 - 1)^2
-// to forces, energy and virial.
+// to forces, energy and virial. After every minimization it runs its stage fixes (those whose
+// hub it is, e.g. fix mesophyll3d/grow) in the protocol's order (fix_dpoly_stage.h).
 class FixDPoly3dCells : public Fix {
  public:
   FixDPoly3dCells(class LAMMPS *, int, char **);
@@ -41,6 +42,7 @@ class FixDPoly3dCells : public Fix {
   void min_pre_neighbor() override;
   void post_force(int) override;
   void min_post_force(int) override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -51,6 +53,8 @@ class FixDPoly3dCells : public Fix {
 
   // Per-cell values, identical on every rank, current after the last force evaluation.
   int ncells() const { return (int) cell_ids.size(); }
+  tagint cell_id(int cell) const { return cell_ids[cell]; }
+  int cell_index(tagint molecule) const;    // -1 if the molecule is not a cell
   double volume(int cell) const { return volumes[cell]; }
   double surface_area(int cell) const { return surface_areas[cell]; }
   double preferred_volume(int cell) const { return preferred_volumes[cell]; }
@@ -75,7 +79,6 @@ class FixDPoly3dCells : public Fix {
   void check_finite_terms();
   void measure_cells();
   void apply_volume_forces(int vflag);
-  int cell_index(tagint molecule) const;
   // local indices of the images of a face's wing atoms nearest to its owned middle atom i
   void face_wings(int i, tagint a, tagint c, int &ja, int &jc);
 };

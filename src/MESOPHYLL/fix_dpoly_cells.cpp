@@ -123,24 +123,8 @@ void FixDPolyCells::init()
 // (with 'run pre no', which skips init()) may have deleted one
 std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
 {
-  std::vector<FixDPolyStage *> stages;
-  for (Fix *fix : modify->get_fix_list())
-    if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) {
-      // a stage acts on the hub's cells (rings, adhesive bonds, contact numbers); a stage on
-      // another group would see ring neighbours and bonds outside its group
-      if (stage->igroup != igroup)
-        error->all(FLERR,
-                   "Fix {} {} is defined on group {}, but fix dpoly/cells {} keeps the cells of "
-                   "group {}: a stage acts on all the hub's cells; define it on group {}",
-                   stage->style, stage->id, group->names[stage->igroup], id, group->names[igroup],
-                   group->names[igroup]);
-      stage->attach(this);
-      stages.push_back(stage);
-    }
-  std::stable_sort(stages.begin(), stages.end(),
-                   [](const FixDPolyStage *a, const FixDPolyStage *b) {
-                     return a->stage() < b->stage();
-                   });
+  std::vector<FixDPolyStage *> stages = FixDPolyStage::stages_of(lmp, this);
+  for (FixDPolyStage *stage : stages) stage->attach(this);
   return stages;
 }
 

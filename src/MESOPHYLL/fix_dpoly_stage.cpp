@@ -7,8 +7,11 @@
 
 #include "comm.h"
 #include "error.h"
+#include "group.h"
+#include "lammps.h"
 #include "modify.h"
 
+#include <algorithm>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -31,11 +34,34 @@ FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage, int
 // the hub may be defined after this fix, so it attaches itself later in the same init()
 void FixDPolyStage::init()
 {
-  if (modify->get_fix_by_style("^dpoly/cells$").empty())
+  if (modify->get_fix_by_style(fmt::format("^{}$", hub_style())).empty())
     error->all(FLERR,
-               "Fix {} needs fix dpoly/cells, which keeps the cells and runs this fix after "
-               "every minimization",
-               style);
+               "Fix {} needs fix {}, which keeps the cells and runs this fix after every "
+               "minimization",
+               style, hub_style());
+}
+
+std::vector<FixDPolyStage *> FixDPolyStage::stages_of(LAMMPS *lmp, Fix *hub)
+{
+  std::vector<FixDPolyStage *> stages;
+  for (Fix *fix : lmp->modify->get_fix_list()) {
+    auto *stage = dynamic_cast<FixDPolyStage *>(fix);
+    if (!stage || strcmp(stage->hub_style(), hub->style) != 0) continue;
+    // a stage acts on the hub's cells (rings or surfaces, adhesive bonds, contact numbers); a
+    // stage on another group would see neighbours and bonds outside its group
+    if (stage->igroup != hub->igroup)
+      lmp->error->all(FLERR,
+                      "Fix {} {} is defined on group {}, but fix {} {} keeps the cells of group "
+                      "{}: a stage acts on all the hub's cells; define it on group {}",
+                      stage->style, stage->id, lmp->group->names[stage->igroup], hub->style,
+                      hub->id, lmp->group->names[hub->igroup], lmp->group->names[hub->igroup]);
+    stages.push_back(stage);
+  }
+  std::stable_sort(stages.begin(), stages.end(),
+                   [](const FixDPolyStage *a, const FixDPolyStage *b) {
+                     return a->stage() < b->stage();
+                   });
+  return stages;
 }
 
 void FixDPolyStage::parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword)

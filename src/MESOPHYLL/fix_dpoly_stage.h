@@ -36,8 +36,13 @@ class FixDPolyStage : public Fix {
   void restart(char *) override;
 
   Stage stage() const { return my_stage; }
+  // the style of the hub that runs this stage: fix dpoly/cells (2d cells) or dpoly3d/cells
+  virtual const char *hub_style() const { return "dpoly/cells"; }
   // fix dpoly/cells hands itself to its stages when it initializes, before any act()
   void attach(class FixDPolyCells *hub) { cells = hub; }
+  // The stages that 'hub' runs (those naming its style), in the protocol's order; an error if
+  // one is defined on another group than the hub's, whose cells it acts on.
+  static std::vector<FixDPolyStage *> stages_of(class LAMMPS *lmp, Fix *hub);
   bool acts_after(int whichflag) const { return whichflag == 2 || (after_runs && whichflag == 1); }
   // Collective: act on the current state; returns the Change flags.
   virtual int act() = 0;
