@@ -16,6 +16,10 @@ configs = {
     # neighbours across a face overlap as well: contacts between and within cells
     "cells3d_touching.data": ["--cells", "2", "--level", "1", "--jitter", "0.05", "--seed", "9",
                               "--spacing", "0.9", "--shift", "0.1", "--sigma", "1.0"],
+    # three jittered cells, the first overlapping the other two (across the boundary too) by
+    # different numbers of vertex pairs: adhesion, contact numbers per cell, breaking
+    "cells3d_adhesive.data": ["--cells", "3", "--level", "1", "--jitter", "0.05", "--seed", "4",
+                              "--spacing", "0.95", "--box", "5.0", "--shift", "0.35"],
     # one 642-vertex cell: data-file lines of full-precision per-edge values
     "icosphere3.data": ["--cells", "1", "--level", "3", "--spacing", "2.0"],
 }

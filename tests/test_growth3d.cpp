@@ -1,8 +1,9 @@
 // Growth of 3d cells, fix mesophyll3d/grow (doc/Howto_polyhedra.rst, section "Growth"), on cells
 // whose growth is known by hand: a regular icosahedron (every vertex void-facing: every edge
 // grows alike, theta0 drifts alike, smoothing leaves it so), one edge's theta0 set apart (the
-// smoothing moves it and exactly its four neighbours), v0 and sigma; restart across a growth
-// step; 1 against several ranks; the void patches of a hand-made surface graph; bad input.
+// smoothing moves it and exactly its four neighbours), v0 and sigma; adhesive cells, whose
+// bonded vertices do not grow; restart across a growth step; 1 against several ranks; the void
+// patches of a hand-made surface graph; bad input.
 #include "test_helpers.h"
 
 #include "dpoly3d_void_patches.h"
@@ -10,10 +11,14 @@
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -240,6 +245,97 @@ TEST(Growth3d, ParallelGrowthMatchesSerial)
   EXPECT_EQ(p.sigma, s.sigma);
 }
 
+namespace {
+// Three jittered 42-vertex cells that touch (tests/make_test_data3d.py), bonded where their
+// vertex spheres overlap (adhere_cells): the vertices with adhesive bonds do not face air.
+std::string adhesive_cells()
+{
+  return "units lj\ndimension 3\natom_style molecular\natom_modify map array\nboundary p p p\n"
+         "fix Vertices all property/atom d_sigma d_v0 ghost yes\n"
+         "fix Edges all property/atom i2_edge 6 ghost yes\n"
+         "fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes\n"
+         "fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes\n"
+         "bond_style hybrid dpoly3d/edge mesophyll/adhesion z bonds\n"
+         "angle_style zero\ndihedral_style dpoly3d/hinge\nread_data " +
+      data_file("cells3d_adhesive.data") +
+      " fix Vertices NULL Vertices fix Edges NULL Edges fix EdgeLengths NULL EdgeLengths fix "
+      "EdgeAngles NULL EdgeAngles extra/bond/types 1 extra/bond/per/atom 12 "
+      "extra/special/per/atom 40\n"
+      "bond_coeff 1 dpoly3d/edge 1.0\nbond_coeff 2 mesophyll/adhesion 0.8\nangle_coeff *\n"
+      "dihedral_coeff * 0.4\nspecial_bonds lj 1.0 1.0 1.0\npair_style dpoly3d/contact\n"
+      "pair_coeff * * 1.0\ncomm_modify cutoff 2.0\nfix cells all dpoly3d/cells eps_v 1.0\n"
+      "thermo_modify norm no\nadhere_cells all 2\nrun 0 post no\n";
+}
+
+// the atoms with an adhesive bond (type 2), from a data file the session writes
+std::set<int> bonded_vertices(LammpsSession &s)
+{
+  const std::string path = scratch("grow3d_bonds.data");
+  s.run("write_data " + path);
+  std::ifstream in(path);
+  std::set<int> bonded;
+  bool bonds = false;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && std::isalpha((unsigned char) line[0])) {
+      bonds = line.rfind("Bonds", 0) == 0;
+      continue;
+    }
+    std::istringstream words(line);
+    int id, type, a, b;
+    if (bonds && (words >> id >> type >> a >> b) && type == 2) bonded.insert({a, b});
+  }
+  return bonded;
+}
+}    // namespace
+
+// With c_L 0 every void-facing vertex gets the same dl = lambda dl_std/E of its cell, so within a
+// cell an edge grows by dl times the number of its void-facing ends: 0 between two bonded
+// vertices, dl with one bonded end, 2 dl between two void-facing ones. With c_L 0.5 the
+// patch term changes dl from patch to patch, but an edge between bonded vertices still keeps
+// its l0.
+TEST(Growth3d, BondedVerticesDoNotGrow)
+{
+  LammpsSession s;
+  s.run(adhesive_cells());
+  const std::set<int> bonded = bonded_vertices(s);
+  ASSERT_FALSE(bonded.empty());
+  const EdgeState before = state_of(s);
+  const std::vector<int> cell = s.gather_int("molecule", 1);
+  s.run("fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.4 c_L 0\n" +
+        std::string(GROW_ONCE));
+  const EdgeState after = state_of(s);
+  EXPECT_EQ(s.thermo("f_grow[2]"), (double) (before.v0.size() - bonded.size()));
+  std::map<int, double> per_void_end;    // cell -> dl
+  std::map<int, int> counted;            // number of void ends -> edges
+  for (size_t k = 0; k < before.partner.size(); k++) {
+    if (!before.partner[k]) continue;
+    const int i = (int) (k / COLUMNS) + 1, j = before.partner[k];
+    const int void_ends = (int) !bonded.count(i) + (int) !bonded.count(j);
+    const double growth = after.l0[k] - before.l0[k];
+    counted[void_ends]++;
+    if (void_ends == 0) {
+      EXPECT_EQ(growth, 0.0) << i << "-" << j;
+      continue;
+    }
+    const int c = cell[i - 1];
+    if (!per_void_end.count(c)) per_void_end[c] = growth / void_ends;
+    EXPECT_NEAR(growth, void_ends * per_void_end[c], 1.0e-12 * per_void_end[c]) << i << "-" << j;
+  }
+  for (int ends : {0, 1, 2}) EXPECT_GT(counted[ends], 0) << ends << " void-facing ends";
+  for (const auto &c : per_void_end) EXPECT_GT(c.second, 0.0);
+
+  // the default c_L: patch sizes differ, edges between bonded vertices still do not grow
+  LammpsSession patches;
+  patches.run(adhesive_cells() + "fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.4\n" +
+              GROW_ONCE);
+  const EdgeState grown = state_of(patches);
+  for (size_t k = 0; k < before.partner.size(); k++)
+    if (before.partner[k] && bonded.count((int) (k / COLUMNS) + 1) &&
+        bonded.count(before.partner[k]))
+      EXPECT_EQ(grown.l0[k], before.l0[k]);
+  if (world_size() == 1) remove(scratch("grow3d_bonds.data").c_str());
+}
+
 // Patches on a hand-made graph: cell 1 has vertices 1-6 in a ring of edges, 1, 2 and 5
 // void-facing (areas 1, 2, 4): patches {1, 2} and {5}; cell 2 one void vertex 7.
 TEST(Growth3d, VoidPatchesAreJoinedByVoidEdgesOnly)
@@ -297,5 +393,5 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow grow is defined on group one, but fix dpoly3d/cells "
         "cells keeps the cells of group all"},
        {"unfix cells\n" + std::string(grow) + "delta_V 0.1\nrun 0 post no\n",
-        "Fix mesophyll3d/grow needs fix dpoly3d/cells"}});
+        "Fix mesophyll3d/grow grows polyhedra: it needs fix dpoly3d/cells"}});
 }

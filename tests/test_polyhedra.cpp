@@ -67,54 +67,11 @@ std::unique_ptr<LammpsSession> deformed_cells(const Model &m = Model(),
   return s;
 }
 
-// Largest deviation of the forces from central differences of the energy, relative to the
-// largest force: on one rank over all three coordinates of every vertex; on several ranks (where
-// each energy costs far more) over every 7th coordinate, which still reaches x, y and z of
-// vertices of both cells on every rank (7 and 3 are coprime).
-double finite_difference_error_3d(LammpsSession &s)
-{
-  const size_t stride = world_size() == 1 ? 1 : 7;
-  s.run("run 0 post no");
-  const std::vector<double> x0 = s.gather("x", 3);
-  const std::vector<double> f = s.gather("f", 3);
-  const double h = 1.0e-6;
-  std::vector<double> numeric(f.size(), 0.0), checked(f.size(), 0.0);
-  for (size_t k = 0; k < x0.size(); k += stride) {
-    checked[k] = f[k];
-    std::vector<double> x = x0;
-    x[k] = x0[k] + h;
-    const double up = potential_energy_at(s, x);
-    x[k] = x0[k] - h;
-    const double down = potential_energy_at(s, x);
-    numeric[k] = -(up - down) / (2.0 * h);
-  }
-  std::vector<double> restored = x0;
-  s.scatter("x", 3, restored);
-  s.run("run 0 post no");
-  return relative_force_error(checked, numeric) * max_abs(checked) / max_abs(f);
-}
-
 void check_forces_by_finite_differences(const Model &m)
 {
   auto s = deformed_cells(m);
   ASSERT_GT(max_abs(s->gather("f", 3)), 1.0e-3) << "the perturbed cells should not be at rest";
   EXPECT_LT(finite_difference_error_3d(*s), 1.0e-7);
-}
-
-// Potential energy with the box and the atoms scaled by sx, sy, sz; the box is restored after.
-double energy_after_scaling_3d(LammpsSession &s, double sx, double sy, double sz)
-{
-  char cmd[256];
-  snprintf(cmd, sizeof(cmd),
-           "change_box all x scale %.17g y scale %.17g z scale %.17g remap\nrun 0 post no", sx, sy,
-           sz);
-  s.run(cmd);
-  const double u = s.thermo("pe");
-  snprintf(cmd, sizeof(cmd),
-           "change_box all x scale %.17g y scale %.17g z scale %.17g remap\nrun 0 post no",
-           1.0 / sx, 1.0 / sy, 1.0 / sz);
-  s.run(cmd);
-  return u;
 }
 
 // the i2_edge/d2_edge_* columns, all of them, one name at a time

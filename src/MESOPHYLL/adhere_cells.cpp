@@ -10,7 +10,7 @@
 #include "bond_mesophyll_adhesion.h"
 #include "comm.h"
 #include "domain.h"
-#include "dpoly_ring.h"
+#include "dpoly_cell_hub.h"
 #include "error.h"
 #include "force.h"
 #include "group.h"
@@ -43,10 +43,10 @@ void AdhereCells::command(int narg, char **arg)
                "adhere_cells: bond type {} is not a bond type of bond_style "
                "mesophyll/adhesion (set its bond_coeff first)",
                btype);
-  if (!force->pair_match("^dpoly/contact", 0))
+  if (!force->pair_match("^dpoly/contact", 0) && !force->pair_match("^dpoly3d/contact", 0))
     error->all(FLERR,
-               "adhere_cells needs pair_style dpoly/contact, whose cutoff covers every "
-               "contact distance");
+               "adhere_cells needs pair_style dpoly/contact (polygons) or dpoly3d/contact "
+               "(polyhedra), whose cutoff covers every contact distance");
 
   // a full neighbor list of the contact pair style's range, built once, as create_bonds does
   neighbor->add_request(this, "adhere_cells", NeighConst::REQ_FULL);
@@ -61,7 +61,8 @@ void AdhereCells::command(int narg, char **arg)
   NeighList *list = neighbor->find_list(this);
   neighbor->build_one(list);
 
-  const DPoly::VertexState state = DPoly::vertex_state(atom, error, "adhere_cells");
+  const double *diameter = DPoly::CellHub::find(lmp, "adhere_cells")->vertex_diameters();
+  const bool in_3d = domain->dimension == 3;    // a 2d z is 0: leave it out, as always
   double **x = atom->x;
   tagint *tag = atom->tag, *molecule = atom->molecule;
   int *mask = atom->mask;
@@ -80,8 +81,9 @@ void AdhereCells::command(int narg, char **arg)
       // the same arithmetic on both owners, so that both see the same verdict
       const int lo = tag[i] < tag[j] ? i : j, hi = (lo == i) ? j : i;
       const double dx = x[lo][0] - x[hi][0], dy = x[lo][1] - x[hi][1];
-      const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
-      if (dx * dx + dy * dy >= s * s) continue;
+      const double dz = in_3d ? x[lo][2] - x[hi][2] : 0.0;
+      const double s = 0.5 * (diameter[i] + diameter[j]);
+      if (dx * dx + dy * dy + dz * dz >= s * s) continue;
       bool bonded = false;
       for (int m = 0; m < atom->num_bond[i]; m++)
         if (atom->bond_atom[i][m] == tag[j] && adhesion->is_adhesive_type(atom->bond_type[i][m]))

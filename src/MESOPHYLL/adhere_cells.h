@@ -18,7 +18,7 @@ namespace LAMMPS_NS {
 
 // adhere_cells group-ID btype: bond every overlapping pair of vertices (r < s) that belong to
 // different cells, with an adhesive bond of type btype: the initial bonds of the Howto's
-// "Contact repulsion and adhesion".
+// "Contact repulsion and adhesion". Polygons and polyhedra alike (r in the simulation's dimension).
 class AdhereCells : public Command {
  public:
   AdhereCells(class LAMMPS *lmp) : Command(lmp) {}

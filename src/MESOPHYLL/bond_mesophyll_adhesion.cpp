@@ -11,7 +11,6 @@
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
-#include "fix_dpoly_cells.h"
 #include "force.h"
 #include "neighbor.h"
 
@@ -26,7 +25,7 @@ using DPoly::AdhesiveBond;
 
 BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
     PerTypeStiffness(lmp, "Bond style mesophyll/adhesion", "eps_c", &Atom::nbondtypes),
-    rule(ContactRule::BONDS)
+    rule(ContactRule::BONDS), hub(nullptr)
 {
   born_matrix_enable = 1;
 }
@@ -62,8 +61,14 @@ BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const std::strin
 // the hub recounts the contacts at every run start: without it they would never be counted
 void BondMesophyllAdhesion::init_style()
 {
-  FixDPolyCells::find(lmp, "Bond style mesophyll/adhesion");
-  vertex_state.find(atom, error, "Bond style mesophyll/adhesion");
+  hub = DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion");
+}
+
+// single() may come before any run
+double *BondMesophyllAdhesion::vertex_diameters()
+{
+  if (!hub) hub = DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion");
+  return hub->vertex_diameters();
 }
 
 double BondMesophyllAdhesion::contact_number(const DPoly::AdhesionCounts &from, tagint cell1,
@@ -93,7 +98,7 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
+  const double *diameter = vertex_diameters();
   double **x = atom->x;
   tagint *molecule = atom->molecule;
   int **bondlist = neighbor->bondlist;
@@ -113,7 +118,7 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
     const double dely = x[i1][1] - x[i2][1];
     const double delz = x[i1][2] - x[i2][2];
     const double r = sqrt(delx * delx + dely * dely + delz * delz);
-    const double s = 0.5 * (state.diameter[i1] + state.diameter[i2]);
+    const double s = 0.5 * (diameter[i1] + diameter[i2]);
     if (r <= s) continue;    // overlap belongs to the pair style
 
     const DPoly::DistanceLaw law =
@@ -127,8 +132,8 @@ void BondMesophyllAdhesion::compute(int eflag, int vflag)
 
 std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
 {
-  const DPoly::VertexState state =
-      DPoly::vertex_state(atom, error, "Bond style mesophyll/adhesion");
+  const double *diameter = vertex_diameters();
+  const bool in_3d = domain->dimension == 3;    // a 2d z is 0: leave it out, as always
   double **x = atom->x;
   tagint *tag = atom->tag;
   std::vector<AdhesiveBond> mine;
@@ -144,15 +149,16 @@ std::vector<AdhesiveBond> BondMesophyllAdhesion::gather_bonds()
                    "Bond style mesophyll/adhesion: atom {} of bond {}-{} is missing on "
                    "this rank; increase the communication cutoff",
                    partner, tag[i], partner);
+      const double dz = in_3d ? x[i][2] - x[j][2] : 0.0;
       const double r = sqrt((x[i][0] - x[j][0]) * (x[i][0] - x[j][0]) +
-                            (x[i][1] - x[j][1]) * (x[i][1] - x[j][1]));
+                            (x[i][1] - x[j][1]) * (x[i][1] - x[j][1]) + dz * dz);
       AdhesiveBond b{std::min(tag[i], partner),
                      std::max(tag[i], partner),
                      0,
                      0,
                      type,
                      r,
-                     0.5 * (state.diameter[i] + state.diameter[j])};
+                     0.5 * (diameter[i] + diameter[j])};
       b.cell1 = (tag[i] < partner) ? atom->molecule[i] : atom->molecule[j];
       b.cell2 = (tag[i] < partner) ? atom->molecule[j] : atom->molecule[i];
       mine.push_back(b);
@@ -217,9 +223,9 @@ void BondMesophyllAdhesion::read_restart_settings(FILE *fp)
 
 double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double &fforce)
 {
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
+  const double *diameter = vertex_diameters();
   const double r = sqrt(rsq);
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  const double s = 0.5 * (diameter[i] + diameter[j]);
   fforce = 0.0;
   if (r <= s) return 0.0;
   const DPoly::DistanceLaw law = DPoly::adhesion_law(stiffness[type], contact_number(i, j), r, s);
@@ -231,9 +237,9 @@ double BondMesophyllAdhesion::single(int type, double rsq, int i, int j, double 
 // second derivative jumps from 0 to eps_c/(z s^2)
 void BondMesophyllAdhesion::born_matrix(int type, double rsq, int i, int j, double &du, double &du2)
 {
-  const DPoly::VertexState state = vertex_state.get(atom, error, "Bond style mesophyll/adhesion");
+  const double *diameter = vertex_diameters();
   const double r = sqrt(rsq);
-  const double s = 0.5 * (state.diameter[i] + state.diameter[j]);
+  const double s = 0.5 * (diameter[i] + diameter[j]);
   du = du2 = 0.0;
   if (r <= s) return;
   const DPoly::DistanceLaw law = DPoly::adhesion_law(stiffness[type], contact_number(i, j), r, s);

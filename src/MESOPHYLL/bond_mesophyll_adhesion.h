@@ -14,7 +14,7 @@ BondStyle(mesophyll/adhesion,BondMesophyllAdhesion);
 
 #include "bond.h"
 #include "dpoly_adhesion.h"
-#include "dpoly_ring.h"
+#include "dpoly_cell_hub.h"
 #include "dpoly_stiffness.h"
 
 #include <string>
@@ -26,8 +26,9 @@ namespace LAMMPS_NS {
 //   U = eps_c/(2 z_munu) (1 - r/s)^2 for a stretched bond (r > s), 0 otherwise,
 // z_munu = (z_mu + z_nu)/2 + 1. Overlap (r < s) is left to pair dpoly/contact, so that no pair
 // is counted twice. The style owns the table of adhesive bonds per vertex and per cell: it is
-// recounted whenever fix dpoly/cells re-reads the cells (every run start) and is fixed during a
-// run; bonds leave it only through remove_bonds().
+// recounted whenever the hub (fix dpoly/cells or fix dpoly3d/cells) re-reads the cells (every
+// run start) and is fixed during a run; bonds leave it only through remove_bonds(). The same law
+// joins polygons and polyhedra: r is the distance in the simulation's dimension.
 class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly::CellAdhesion {
  public:
   BondMesophyllAdhesion(class LAMMPS *);
@@ -63,7 +64,8 @@ class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly
   enum class ContactRule { BONDS, CELLS };
   ContactRule rule;
   DPoly::AdhesionCounts contacts;
-  DPoly::VertexStateCache vertex_state;
+  DPoly::CellHub *hub;    // found at init_style(); sigma comes from it
+  double *vertex_diameters();
   double contact_number(int i, int j);
 };
 

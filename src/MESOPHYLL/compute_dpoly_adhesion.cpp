@@ -7,8 +7,8 @@
 
 #include "atom.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_cell_hub.h"
 #include "error.h"
-#include "fix_dpoly_cells.h"
 #include "memory.h"
 #include "update.h"
 
@@ -37,7 +37,7 @@ ComputeDPolyAdhesion::~ComputeDPolyAdhesion()
 
 void ComputeDPolyAdhesion::init()
 {
-  cells = FixDPolyCells::find(lmp, "Compute dpoly/adhesion");
+  cells = DPoly::CellHub::find(lmp, "Compute dpoly/adhesion");
 }
 
 void ComputeDPolyAdhesion::compute_array()

@@ -13,12 +13,14 @@ ComputeStyle(dpoly/adhesion,ComputeDPolyAdhesion);
 #define LMP_COMPUTE_DPOLY_ADHESION_H
 
 #include "compute.h"
+#include "dpoly_cell_hub.h"
 #include "dpoly_measure.h"
 
 namespace LAMMPS_NS {
 
-// Adhesive bonds as fix dpoly/cells last counted them: per vertex (0 = void-facing), and per
-// cell (cell ID, adhesive bonds, distinct cells bonded to it) as a global array.
+// Adhesive bonds as the cell-adhesion bond style last counted them: per vertex (0 = void-facing),
+// and per cell (cell ID, adhesive bonds, distinct cells bonded to it) as a global array; for
+// polygons (fix dpoly/cells) and polyhedra (fix dpoly3d/cells) alike.
 class ComputeDPolyAdhesion : public Compute, public DPoly::TissueMeasure {
  public:
   ComputeDPolyAdhesion(class LAMMPS *, int, char **);
@@ -31,7 +33,7 @@ class ComputeDPolyAdhesion : public Compute, public DPoly::TissueMeasure {
   void forget_values() override { DPoly::forget_peratom(this); }
 
  private:
-  class FixDPolyCells *cells;
+  DPoly::CellHub *cells;    // fix dpoly/cells or fix dpoly3d/cells
   double **per_cell;
   double *per_vertex;
   int nmax;

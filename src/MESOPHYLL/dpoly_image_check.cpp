@@ -65,8 +65,8 @@ void AdhesiveBondsImageCheck::count_inconsistent(const std::vector<double> &unwr
   bigint mine[2] = {0, 0};    // inconsistent, all
   const CellAdhesion *adhesion = find_cell_adhesion(lmp);
   if (adhesion && atom->avec->bonds_allow) {
-    const double half[2] = {0.5 * domain->xprd, 0.5 * domain->yprd};
-    const int periodic[2] = {domain->xperiodic, domain->yperiodic};
+    const double half[3] = {0.5 * domain->xprd, 0.5 * domain->yprd, 0.5 * domain->zprd};
+    const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
     for (int i = 0; i < atom->nlocal; i++)
       for (int m = 0; m < atom->num_bond[i]; m++) {
         if (!adhesion->is_adhesive_type(atom->bond_type[i][m])) continue;
@@ -76,7 +76,7 @@ void AdhesiveBondsImageCheck::count_inconsistent(const std::vector<double> &unwr
         const int k = atom->map(partner);
         if (k < 0) continue;    // LAMMPS's own check reports a missing bond atom
         bool inconsistent = false;
-        for (int d = 0; d < 2; d++)
+        for (int d = 0; d < domain->dimension; d++)
           if (periodic[d] && std::fabs(unwrapped[3 * i + d] - unwrapped[3 * k + d]) > half[d])
             inconsistent = true;
         if (inconsistent) mine[0]++;
@@ -101,9 +101,11 @@ void AdhesiveBondsImageCheck::explain_once(const std::vector<double> &unwrapped)
                    "  cells form a network that closes around the periodic box, and no image "
                    "flags make every bond of a\n"
                    "  loop around the box short. Harmless: every style uses the nearest image, "
-                   "and fix dpoly/cells stops\n"
-                   "  the run if a ring is not whole. From now on adhesive bonds are left out of "
+                   "and {} stops\n"
+                   "  the run if a {} is not whole. From now on adhesive bonds are left out of "
                    "that check; every other\n"
                    "  bond is still checked.\n",
-                   counts[0], counts[1]);
+                   counts[0], counts[1],
+                   domain->dimension == 3 ? "fix dpoly3d/cells" : "fix dpoly/cells",
+                   domain->dimension == 3 ? "face" : "ring");
 }

@@ -14,8 +14,9 @@
 // setup_pre_exchange() and setup_pre_neighbor(), which bracket the check in Verlet::setup(),
 // Min::setup() and their setup_minimal(), their bond types are stored as -(type + nbondtypes),
 // below every type LAMMPS itself uses (it marks turned-off bonds by type <= 0, down to
-// -nbondtypes), which image_check() and box_too_small_check() skip. Ring segments and every other
-// bond stay in the check, so a ring with inconsistent image flags is still reported.
+// -nbondtypes), which image_check() and box_too_small_check() skip. Ring segments (surface edges
+// in 3d) and every other bond stay in the check, so a cell with inconsistent image flags is still
+// reported. Both hubs, fix dpoly/cells and fix dpoly3d/cells, use it.
 
 #ifndef LMP_DPOLY_IMAGE_CHECK_H
 #define LMP_DPOLY_IMAGE_CHECK_H

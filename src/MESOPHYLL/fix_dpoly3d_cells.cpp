@@ -12,6 +12,8 @@
 #include "comm.h"
 #include "dihedral.h"
 #include "domain.h"
+#include "dpoly_adhesion.h"
+#include "dpoly_image_check.h"
 #include "dpoly_laws.h"
 #include "dpoly_ring.h"
 #include "error.h"
@@ -19,7 +21,6 @@
 #include "force.h"
 #include "group.h"
 #include "math_extra.h"
-#include "min.h"
 #include "modify.h"
 #include "update.h"
 
@@ -68,7 +69,8 @@ std::vector<Edge> as_pairs(const std::vector<EdgeRecord> &records)
 }    // namespace
 
 FixDPoly3dCells::FixDPoly3dCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), volume_eps(1.0), volume_energy(0.0)
+    Fix(lmp, narg, arg), volume_eps(1.0), volume_energy(0.0),
+    image_check(new DPoly::AdhesiveBondsImageCheck(lmp))
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -97,13 +99,22 @@ FixDPoly3dCells::FixDPoly3dCells(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
 }
 
+// the adhesive bonds get their types back if an error left them hidden (dpoly_image_check.h)
+FixDPoly3dCells::~FixDPoly3dCells()
+{
+  image_check->after_check();
+}
+
 int FixDPoly3dCells::setmask()
 {
-  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR;
+  // PRE_EXCHANGE only for setup_pre_exchange(): pre_exchange() itself does nothing
+  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR |
+      PRE_EXCHANGE | MIN_PRE_EXCHANGE;
 }
 
 void FixDPoly3dCells::init()
 {
+  image_check->init();    // types hidden by a setup that an error cut short
   if (domain->dimension != 3)
     error->all(FLERR, "{} needs a 3d simulation (dimension 3); 2d cells use fix dpoly/cells",
                STYLE);
@@ -134,7 +145,46 @@ void FixDPoly3dCells::init()
                "{} {}: the volume term must count in both energy and virial; do not use "
                "fix_modify energy no or virial no with it",
                STYLE, id);
-  FixDPolyStage::stages_of(lmp, this);    // stops now for a stage on another group
+  find_stages();
+}
+
+std::vector<FixDPolyStage *> FixDPoly3dCells::find_stages()
+{
+  return FixDPolyStage::attach_all(lmp, this, this, nullptr);
+}
+
+// after a minimization (or an MD run, for stages with 'runs yes'): the stages, in order; none of
+// those that act on polyhedra changes the surfaces
+void FixDPoly3dCells::post_run()
+{
+  FixDPolyStage::act_after_run(lmp, find_stages(), [](int) {});
+}
+
+double *FixDPoly3dCells::vertex_diameters()
+{
+  return vertex_state.get(atom, error, STYLE).diameter;
+}
+
+std::vector<tagint> FixDPoly3dCells::surface_neighbours(tagint atom) const
+{
+  const auto found = edge_partners.find(atom);
+  return found == edge_partners.end() ? std::vector<tagint>() : found->second;
+}
+
+// these two bracket LAMMPS's image-flag check at the setup of a run or minimization: the adhesive
+// bonds, whose network closes around the periodic box, are left out of it once it has been said
+// why (dpoly_image_check.h)
+void FixDPoly3dCells::setup_pre_exchange()
+{
+  image_check->before_check();
+}
+
+void FixDPoly3dCells::setup_pre_neighbor()
+{
+  image_check->after_check();
+  if (image_check->explained()) return;
+  share_unwrapped_positions();
+  image_check->explain_once(unwrapped);
 }
 
 // before the first force evaluation of a run, so that every style sees checked cells
@@ -177,34 +227,12 @@ void FixDPoly3dCells::post_force(int vflag)
   apply_volume_forces(vflag);
 }
 
-/* ----------------------------------------------------------------------
-   after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
-   order, each seeing the ghost atoms with what the one before changed. The next run re-reads
-   the cells (and their v0) when it sets up. Min::cleanup() reads the minimizer's vectors after
-   this, so they must cover the atoms as they are now.
-------------------------------------------------------------------------- */
-
-void FixDPoly3dCells::post_run()
-{
-  int changed = FixDPolyStage::NOTHING;
-  for (FixDPolyStage *stage : FixDPolyStage::stages_of(lmp, this)) {
-    if (!stage->acts_after(update->whichflag)) continue;
-    const int change = stage->act();
-    if (change & (FixDPolyStage::BONDS | FixDPolyStage::RINGS))
-      DPoly::rebuild_special_and_ghosts(lmp);
-    else if (change & FixDPolyStage::STATE)
-      DPoly::refresh_ghosts(lmp);
-    changed |= change;
-  }
-  if (changed != FixDPolyStage::NOTHING && update->whichflag == 2)
-    update->minimize->reset_vectors();
-}
-
 void FixDPoly3dCells::refresh_cells()
 {
   check_surfaces();
   share_unwrapped_positions();
   check_whole_faces();
+  if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
   measure_cells();
   check_finite_terms();
   for (int c = 0; c < ncells(); c++)
@@ -351,6 +379,7 @@ void FixDPoly3dCells::check_surfaces()
     face_counts[molecule_of[f.b]]++;
   }
   std::map<tagint, int> edge_counts;
+  edge_partners.clear();
   for (const auto &o : opposite) {
     const Edge &d = o.first;
     if (!opposite.count(Edge(d.second, d.first)))
@@ -360,6 +389,7 @@ void FixDPoly3dCells::check_surfaces()
                  "counter-clockwise from outside",
                  STYLE, d.first, d.second, molecule_of[d.first]);
     if (d.first < d.second) edge_counts[molecule_of[d.first]]++;
+    edge_partners[d.first].push_back(d.second);    // each directed edge once: both ends
   }
   for (const auto &v : vertices)
     if (!on_faces.count(v.tag))

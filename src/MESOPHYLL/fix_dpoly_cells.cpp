@@ -13,14 +13,12 @@
 #include "dpoly_adhesion.h"
 #include "dpoly_image_check.h"
 #include "dpoly_laws.h"
-#include "dpoly_measure.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
 #include "force.h"
 #include "group.h"
 #include "math_const.h"
-#include "min.h"
 #include "modify.h"
 #include "update.h"
 
@@ -108,7 +106,7 @@ void FixDPolyCells::init()
     error->all(FLERR,
                "Fix dpoly/cells needs angles: each vertex is the centre of one angle "
                "(prev, vertex, next) that gives the ring order");
-  DPoly::vertex_state(atom, error, "Fix dpoly/cells");
+  vertex_state.find(atom, error, "Fix dpoly/cells");
   if (modify->get_fix_by_style("^dpoly/cells$").size() > 1)
     error->all(FLERR, "Only one fix dpoly/cells may be defined");
   if (!thermo_energy || !thermo_virial)
@@ -119,13 +117,20 @@ void FixDPolyCells::init()
   find_stages();
 }
 
-// the stage fixes in the order they act; found again at every use, as 'unfix' between runs
-// (with 'run pre no', which skips init()) may have deleted one
 std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
 {
-  std::vector<FixDPolyStage *> stages = FixDPolyStage::stages_of(lmp, this);
-  for (FixDPolyStage *stage : stages) stage->attach(this);
-  return stages;
+  return FixDPolyStage::attach_all(lmp, this, this, this);
+}
+
+double *FixDPolyCells::vertex_diameters()
+{
+  return vertex_state.get(atom, error, "Fix dpoly/cells").diameter;
+}
+
+std::vector<tagint> FixDPolyCells::surface_neighbours(tagint atom) const
+{
+  const RingNeighbours &ring = ring_neighbours(atom);
+  return {ring.prev, ring.next};
 }
 
 /* ----------------------------------------------------------------------
@@ -193,47 +198,16 @@ void FixDPolyCells::post_force(int vflag)
 
 /* ----------------------------------------------------------------------
    after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
-   order. A stage that changed bonds or atoms gets the special lists and ghost atoms rebuilt, one
-   that changed per-vertex values (growth) its ghost atoms, before the next stage reads them;
-   the rings are re-read after a stage that changed them (refinement, which growth may follow).
-   Min::cleanup() reads the minimizer's vectors after this, so they must cover the atoms as they
-   are now. The package's computes take the minimum's values first and drop what the stages made
-   stale (dpoly_measure.h).
+   order (FixDPolyStage::act_after_run()); the rings are re-read after a stage that changed them
+   (refinement, which growth may follow)
 ------------------------------------------------------------------------- */
 
 void FixDPolyCells::post_run()
 {
-  std::vector<FixDPolyStage *> acting;
-  for (FixDPolyStage *stage : find_stages())
-    if (stage->acts_after(update->whichflag)) acting.push_back(stage);
-  if (acting.empty()) return;
-
-  const std::vector<DPoly::TissueMeasure *> measures = find_measures();
-  for (DPoly::TissueMeasure *measure : measures) measure->measure_minimum();
-
-  int changed = FixDPolyStage::NOTHING;
-  for (FixDPolyStage *stage : acting) {
-    const int change = stage->act();
-    if (change & (FixDPolyStage::BONDS | FixDPolyStage::RINGS))
-      DPoly::rebuild_special_and_ghosts(lmp);
-    else if (change & FixDPolyStage::STATE)
-      DPoly::refresh_ghosts(lmp);
+  FixDPolyStage::act_after_run(lmp, find_stages(), [&](int change) {
     if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
     if (change & FixDPolyStage::RINGS) refresh_cells();
-    changed |= change;
-  }
-  if (changed == FixDPolyStage::NOTHING) return;
-  if (update->whichflag == 2) update->minimize->reset_vectors();
-  for (DPoly::TissueMeasure *measure : measures) measure->forget_values();
-}
-
-// the package's computes, in the order they were defined
-std::vector<DPoly::TissueMeasure *> FixDPolyCells::find_measures()
-{
-  std::vector<DPoly::TissueMeasure *> measures;
-  for (Compute *compute : modify->get_compute_list())
-    if (auto *measure = dynamic_cast<DPoly::TissueMeasure *>(compute)) measures.push_back(measure);
-  return measures;
+  });
 }
 
 /* ----------------------------------------------------------------------

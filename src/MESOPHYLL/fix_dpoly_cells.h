@@ -12,6 +12,8 @@ FixStyle(dpoly/cells,FixDPolyCells);
 #ifndef LMP_FIX_DPOLY_CELLS_H
 #define LMP_FIX_DPOLY_CELLS_H
 
+#include "dpoly_cell_hub.h"
+#include "dpoly_ring.h"
 #include "fix.h"
 
 #include <memory>
@@ -22,7 +24,6 @@ FixStyle(dpoly/cells,FixDPolyCells);
 namespace LAMMPS_NS {
 namespace DPoly {
   class AdhesiveBondsImageCheck;
-  class TissueMeasure;
 }    // namespace DPoly
 
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
@@ -30,8 +31,8 @@ namespace DPoly {
 //   U_area = (eps_a/2) (a/a0 - 1)^2
 // to forces, energy and virial. After every minimization it runs the stage fixes (check, break,
 // refine before growth, grow, refine: see fix_dpoly_stage.h) in that order. Companion styles
-// find it with find().
-class FixDPolyCells : public Fix {
+// find it with find(); the styles that also adhere polyhedra find it as a DPoly::CellHub.
+class FixDPolyCells : public Fix, public DPoly::CellHub {
  public:
   FixDPolyCells(class LAMMPS *, int, char **);
   ~FixDPolyCells() override;
@@ -60,8 +61,8 @@ class FixDPolyCells : public Fix {
   static FixDPolyCells *find(class LAMMPS *lmp, const std::string &who);
 
   // Per-cell values, identical on every rank, current after the last force evaluation.
-  int ncells() const { return (int) cell_ids.size(); }
-  tagint cell_id(int cell) const { return cell_ids[cell]; }
+  int ncells() const override { return (int) cell_ids.size(); }
+  tagint cell_id(int cell) const override { return cell_ids[cell]; }
   int cell_index(tagint molecule) const;    // -1 if the molecule is not a cell
   double area(int cell) const { return areas[cell]; }
   double perimeter(int cell) const { return perimeters[cell]; }
@@ -76,6 +77,11 @@ class FixDPolyCells : public Fix {
   const RingNeighbours &ring_neighbours(tagint atom) const { return rings.at(atom); }
   // A cell's vertex IDs in ring order (counter-clockwise), as found when the rings were checked.
   const std::vector<tagint> &ring(int cell) const { return ring_order[cell]; }
+
+  // DPoly::CellHub: sigma, the ring neighbours, dimension 2
+  double *vertex_diameters() override;
+  std::vector<tagint> surface_neighbours(tagint atom) const override;
+  int cell_dimension() const override { return 2; }
 
   // Re-read cells, ring order and preferred areas, and have the cell-adhesion bond style
   // recount its bonds (collective). Runs by itself at the start of every run and minimize, and
@@ -102,9 +108,9 @@ class FixDPolyCells : public Fix {
   int checked_atoms;
   // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
   std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
+  DPoly::VertexStateCache vertex_state;
 
   std::vector<class FixDPolyStage *> find_stages();
-  std::vector<DPoly::TissueMeasure *> find_measures();
   void gather_rings();
   void share_unwrapped_positions();
   void check_segments();

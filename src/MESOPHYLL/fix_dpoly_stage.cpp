@@ -6,10 +6,14 @@
 #include "fix_dpoly_stage.h"
 
 #include "comm.h"
+#include "compute.h"
+#include "dpoly_measure.h"
+#include "dpoly_ring.h"
 #include "error.h"
 #include "group.h"
-#include "lammps.h"
+#include "min.h"
 #include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cstring>
@@ -22,7 +26,7 @@ constexpr int RESTART_VERSION = 1;
 }    // namespace
 
 FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage, int vector_length) :
-    Fix(lmp, narg, arg), cells(nullptr), after_runs(0), my_stage(stage)
+    Fix(lmp, narg, arg), hub(nullptr), cells(nullptr), after_runs(0), my_stage(stage)
 {
   restart_global = 1;
   vector_flag = 1;
@@ -34,34 +38,71 @@ FixDPolyStage::FixDPolyStage(LAMMPS *lmp, int narg, char **arg, Stage stage, int
 // the hub may be defined after this fix, so it attaches itself later in the same init()
 void FixDPolyStage::init()
 {
-  if (modify->get_fix_by_style(fmt::format("^{}$", hub_style())).empty())
+  const DPoly::CellHub *found = DPoly::CellHub::find_any(lmp);
+  if (!found)
     error->all(FLERR,
-               "Fix {} needs fix {}, which keeps the cells and runs this fix after every "
-               "minimization",
-               style, hub_style());
+               "Fix {} needs fix dpoly/cells{}, which keeps the cells and runs this fix after "
+               "every minimization",
+               style, acts_on_polyhedra() ? " or fix dpoly3d/cells" : "");
+  if (found->cell_dimension() == 3 && !acts_on_polyhedra())
+    error->all(FLERR,
+               "Fix {} acts on polygons only: it needs fix dpoly/cells, not fix dpoly3d/cells",
+               style);
 }
 
-std::vector<FixDPolyStage *> FixDPolyStage::stages_of(LAMMPS *lmp, Fix *hub)
+std::vector<FixDPolyStage *> FixDPolyStage::attach_all(LAMMPS *lmp, Fix *hub_fix,
+                                                       DPoly::CellHub *hub,
+                                                       FixDPolyCells *polygons)
 {
   std::vector<FixDPolyStage *> stages;
-  for (Fix *fix : lmp->modify->get_fix_list()) {
-    auto *stage = dynamic_cast<FixDPolyStage *>(fix);
-    if (!stage || strcmp(stage->hub_style(), hub->style) != 0) continue;
-    // a stage acts on the hub's cells (rings or surfaces, adhesive bonds, contact numbers); a
-    // stage on another group would see neighbours and bonds outside its group
-    if (stage->igroup != hub->igroup)
-      lmp->error->all(FLERR,
-                      "Fix {} {} is defined on group {}, but fix {} {} keeps the cells of group "
-                      "{}: a stage acts on all the hub's cells; define it on group {}",
-                      stage->style, stage->id, lmp->group->names[stage->igroup], hub->style,
-                      hub->id, lmp->group->names[hub->igroup], lmp->group->names[hub->igroup]);
-    stages.push_back(stage);
-  }
+  for (Fix *fix : lmp->modify->get_fix_list())
+    if (auto *stage = dynamic_cast<FixDPolyStage *>(fix)) {
+      // a stage acts on the hub's cells (rings, adhesive bonds, contact numbers); a stage on
+      // another group would see surface neighbours and bonds outside its group
+      if (stage->igroup != hub_fix->igroup)
+        lmp->error->all(FLERR,
+                        "Fix {} {} is defined on group {}, but fix {} {} keeps the cells of "
+                        "group {}: a stage acts on all the hub's cells; define it on group {}",
+                        stage->style, stage->id, lmp->group->names[stage->igroup],
+                        hub_fix->style, hub_fix->id, lmp->group->names[hub_fix->igroup],
+                        lmp->group->names[hub_fix->igroup]);
+      stage->attach(hub, polygons);
+      stages.push_back(stage);
+    }
   std::stable_sort(stages.begin(), stages.end(),
                    [](const FixDPolyStage *a, const FixDPolyStage *b) {
                      return a->stage() < b->stage();
                    });
   return stages;
+}
+
+void FixDPolyStage::act_after_run(LAMMPS *lmp, const std::vector<FixDPolyStage *> &stages,
+                                  const std::function<void(int change)> &after_change)
+{
+  std::vector<FixDPolyStage *> acting;
+  for (FixDPolyStage *stage : stages)
+    if (stage->acts_after(lmp->update->whichflag)) acting.push_back(stage);
+  if (acting.empty()) return;
+
+  std::vector<DPoly::TissueMeasure *> measures;    // the package's computes, in their order
+  for (Compute *compute : lmp->modify->get_compute_list())
+    if (auto *measure = dynamic_cast<DPoly::TissueMeasure *>(compute)) measures.push_back(measure);
+  for (DPoly::TissueMeasure *measure : measures) measure->measure_minimum();
+
+  int changed = NOTHING;
+  for (FixDPolyStage *stage : acting) {
+    const int change = stage->act();
+    if (change & (BONDS | RINGS))
+      DPoly::rebuild_special_and_ghosts(lmp);
+    else if (change & STATE)
+      DPoly::refresh_ghosts(lmp);
+    after_change(change);
+    changed |= change;
+  }
+  if (changed == NOTHING) return;
+  // Min::cleanup() reads the minimizer's vectors after this: they must cover the atoms as now
+  if (lmp->update->whichflag == 2) lmp->update->minimize->reset_vectors();
+  for (DPoly::TissueMeasure *measure : measures) measure->forget_values();
 }
 
 void FixDPolyStage::parse_keywords(int first, int narg, char **arg, const KeywordReader &keyword)

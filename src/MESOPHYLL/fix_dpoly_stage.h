@@ -6,6 +6,7 @@
 #ifndef LMP_FIX_DPOLY_STAGE_H
 #define LMP_FIX_DPOLY_STAGE_H
 
+#include "dpoly_cell_hub.h"
 #include "fix.h"
 
 #include <functional>
@@ -15,12 +16,13 @@ namespace LAMMPS_NS {
 
 // Base of the fixes that act on the tissue between two minimizations: checking the minimum,
 // breaking bonds, growing cells, refining rings. Such a fix declares its stage and does its work
-// in act(); fix dpoly/cells calls the defined stages after every minimization in the protocol's
-// fixed order (the order of the stages below, whatever the order of the fix commands), and after
-// an MD run only those given 'runs yes'. Refinement has two places, before growth (where the
-// published code inserts vertices, at the radii of the minimum) and after it. The base class holds
-// what every stage shares: the hub, the 'runs' keyword, its global vector, and versioned,
-// size-checked global restart data.
+// in act(); the hub (fix dpoly/cells, or fix dpoly3d/cells for the stages that act on polyhedra)
+// calls the defined stages after every minimization in the protocol's fixed order (the order of
+// the stages below, whatever the order of the fix commands), and after an MD run only those given
+// 'runs yes'. Refinement has two places, before growth (where the published code inserts
+// vertices, at the radii of the minimum) and after it. The base class holds what every stage
+// shares: the hub, the 'runs' keyword, its global vector, and versioned, size-checked global
+// restart data; and, for both hubs, how the stages are found and run.
 class FixDPolyStage : public Fix {
  public:
   enum Stage { CHECK, BREAK, REFINE_BEFORE_GROWTH, GROW, REFINE };
@@ -36,19 +38,37 @@ class FixDPolyStage : public Fix {
   void restart(char *) override;
 
   Stage stage() const { return my_stage; }
-  // the style of the hub that runs this stage: fix dpoly/cells (2d cells) or dpoly3d/cells
-  virtual const char *hub_style() const { return "dpoly/cells"; }
-  // fix dpoly/cells hands itself to its stages when it initializes, before any act()
-  void attach(class FixDPolyCells *hub) { cells = hub; }
-  // The stages that 'hub' runs (those naming its style), in the protocol's order; an error if
-  // one is defined on another group than the hub's, whose cells it acts on.
-  static std::vector<FixDPolyStage *> stages_of(class LAMMPS *lmp, Fix *hub);
+  // the hub hands itself to its stages when it initializes, before any act(); 'polygons' is
+  // the same hub when it is fix dpoly/cells, nullptr when it keeps polyhedra
+  void attach(DPoly::CellHub *cell_hub, class FixDPolyCells *polygons)
+  {
+    hub = cell_hub;
+    cells = polygons;
+  }
   bool acts_after(int whichflag) const { return whichflag == 2 || (after_runs && whichflag == 1); }
   // Collective: act on the current state; returns the Change flags.
   virtual int act() = 0;
+  // whether this stage acts on polyhedra (fix dpoly3d/cells) as well as on polygons
+  virtual bool acts_on_polyhedra() const { return false; }
+
+  // The stage fixes of the hub 'hub_fix' (also 'hub') in the order they act, attached to it; an
+  // error if one is defined on another group than the hub's. Found again at every use, as
+  // 'unfix' between runs (with 'run pre no', which skips init()) may have deleted one.
+  static std::vector<FixDPolyStage *> attach_all(class LAMMPS *lmp, Fix *hub_fix,
+                                                 DPoly::CellHub *hub,
+                                                 class FixDPolyCells *polygons);
+  // Collective, from a hub's post_run(): the stages that act after this run (minimization, or MD
+  // for 'runs yes'), in order. A stage that changed bonds or atoms gets the special lists and
+  // ghost atoms rebuilt, one that changed per-vertex values its ghost atoms, before the next
+  // stage reads them; then 'after_change' (the hub's own bookkeeping) sees its Change flags.
+  // The package's computes take the minimum's values first and drop what the stages made stale
+  // (dpoly_measure.h); the minimizer's vectors are reset if anything changed.
+  static void act_after_run(class LAMMPS *lmp, const std::vector<FixDPolyStage *> &stages,
+                            const std::function<void(int change)> &after_change);
 
  protected:
-  class FixDPolyCells *cells;    // the hub that calls act()
+  DPoly::CellHub *hub;           // the hub that calls act()
+  class FixDPolyCells *cells;    // the same hub if it keeps polygons, else nullptr
   int after_runs;                // also act after MD runs, not only after minimizations
 
   // Reads the keyword/value pairs arg[first..narg): 'runs' here (not for the check, which reads

@@ -27,7 +27,7 @@ namespace LAMMPS_NS {
 class FixMesophyll3dGrow : public FixDPolyStage {
  public:
   FixMesophyll3dGrow(class LAMMPS *, int, char **);
-  const char *hub_style() const override { return "dpoly3d/cells"; }
+  bool acts_on_polyhedra() const override { return true; }
   void init() override;
   int act() override;    // one growth step
   double compute_vector(int) override;
@@ -45,7 +45,7 @@ class FixMesophyll3dGrow : public FixDPolyStage {
   };
 
  private:
-  class FixDPoly3dCells *hub;
+  class FixDPoly3dCells *cells3d;    // the hub, fix dpoly3d/cells
   DPoly3d::VertexStateCache vertex_state;
   DPoly3d::EdgeValues edge_values;
   DPoly::GrowthRates rates;    // lambda, c_L, c_B, theta0_min, scale_sigma, box

@@ -10,7 +10,6 @@
 #include "comm.h"
 #include "dpoly_laws.h"
 #include "error.h"
-#include "fix_dpoly_cells.h"
 #include "memory.h"
 
 #include <Random123/philox.h>
@@ -79,13 +78,14 @@ double FixMesophyllBreak::uniform(int seed, bigint step, tagint atom1, tagint at
   return (bits[0] + 0.5) * (1.0 / 4294967296.0);
 }
 
+// at the edge of a junction: a surface neighbour (ring neighbour in 2d, edge partner in 3d) of
+// either bonded vertex has no adhesive bond, i.e. faces air
 bool FixMesophyllBreak::at_junction_edge(const AdhesiveBond &b,
                                          const DPoly::AdhesionCounts &counts) const
 {
-  for (tagint atom : {b.atom1, b.atom2}) {
-    const auto &ring = cells->ring_neighbours(atom);
-    if (counts.vertex_bonds(ring.prev) == 0 || counts.vertex_bonds(ring.next) == 0) return true;
-  }
+  for (tagint atom : {b.atom1, b.atom2})
+    for (tagint neighbour : hub->surface_neighbours(atom))
+      if (counts.vertex_bonds(neighbour) == 0) return true;
   return false;
 }
 

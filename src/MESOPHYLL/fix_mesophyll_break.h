@@ -23,12 +23,14 @@ namespace LAMMPS_NS {
 // S2): a stretched bond breaks when U_c >= U0, otherwise with probability exp(-beta (U0 - U_c)).
 // Bonds are visited in the order of their atom IDs and every random number is a function of
 // (seed, break step, the two atom IDs), so the outcome does not depend on the number of ranks.
+// The same rule breaks bonds between polygons (fix dpoly/cells) and polyhedra (fix dpoly3d/cells).
 class FixMesophyllBreak : public FixDPolyStage {
  public:
   FixMesophyllBreak(class LAMMPS *, int, char **);
   ~FixMesophyllBreak() override;
   void init() override;
   int act() override;
+  bool acts_on_polyhedra() const override { return true; }
   double compute_vector(int) override;
 
   // The uniform number in (0,1) drawn for a bond at a break step (public for the tests).
