@@ -32,7 +32,7 @@ using Edge = std::pair<tagint, tagint>;    // (lower ID, higher ID)
 }    // namespace
 
 FixMesophyll3dGrow::FixMesophyll3dGrow(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, GROW, 3), hub(nullptr), delta_volume(-1.0), steps(0),
+    FixDPolyStage(lmp, narg, arg, GROW, 3), cells3d(nullptr), delta_volume(-1.0), steps(0),
     void_vertices(0), void_edges(0)
 {
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -55,9 +55,16 @@ FixMesophyll3dGrow::FixMesophyll3dGrow(LAMMPS *lmp, int narg, char **arg) :
 
 void FixMesophyll3dGrow::init()
 {
+  // before the base's check, which would accept the 2d hub too
+  const auto hubs = modify->get_fix_by_style("^dpoly3d/cells$");
+  if (hubs.empty())
+    error->all(FLERR,
+               "{} grows polyhedra: it needs fix dpoly3d/cells (2d cells grow with fix "
+               "mesophyll/grow)",
+               STYLE);
+  cells3d = dynamic_cast<FixDPoly3dCells *>(hubs.front());
   FixDPolyStage::init();
   rates.check_box(lmp, style, id);
-  hub = dynamic_cast<FixDPoly3dCells *>(modify->get_fix_by_style("^dpoly3d/cells$").front());
   vertex_state.find(atom, error, STYLE);
   edge_values.find(atom, error, STYLE);
 }
@@ -137,16 +144,16 @@ int FixMesophyll3dGrow::act()
   std::vector<FaceArea> faces;
   gather_surfaces(edges, faces);
 
-  const int ncells = hub->ncells();
+  const int ncells = cells3d->ncells();
   std::vector<double> edge_length(ncells, 0.0), surface(ncells, 0.0), dl_std(ncells, 0.0);
   std::vector<int> edge_count(ncells, 0);
   std::map<tagint, int> cell_of;    // vertex -> cell index
   std::map<Edge, int> edge_index;
   for (size_t e = 0; e < edges.size(); e++) {
-    const int c = hub->cell_index(edges[e].cell);
+    const int c = cells3d->cell_index(edges[e].cell);
     if (c < 0)
       error->all(FLERR, "{}: vertex {} belongs to molecule {}, which is not a cell of fix {}",
-                 STYLE, edges[e].lo, edges[e].cell, hub->id);
+                 STYLE, edges[e].lo, edges[e].cell, cells3d->id);
     edge_length[c] += edges[e].length;
     edge_count[c]++;
     cell_of[edges[e].lo] = cell_of[edges[e].hi] = c;
@@ -158,13 +165,13 @@ int FixMesophyll3dGrow::act()
     surface[cell_of.at(f.b)] += f.area;
   }
   for (int c = 0; c < ncells; c++) {
-    const double volume = hub->volume(c);
+    const double volume = cells3d->volume(c);
     // a tangled or inverted cell has no isometric growth to measure against
     if (!(volume > 0.0) || !std::isfinite(volume) || !std::isfinite(edge_length[c]))
       error->all(FLERR,
                  "{}: cell {} encloses the volume {} with edges of total length {}: growth "
                  "needs a positive, finite volume",
-                 STYLE, hub->cell_id(c), volume, edge_length[c]);
+                 STYLE, cells3d->cell_id(c), volume, edge_length[c]);
     dl_std[c] = edge_length[c] / volume * delta_volume / 3.0;
   }
 
@@ -172,7 +179,7 @@ int FixMesophyll3dGrow::act()
   DPoly3d::VoidPatches patches;
   for (const auto &v : exposed)
     if (adhesion.void_facing(v.first))
-      patches.add_vertex(v.first, hub->cell_id(cell_of.at(v.first)), v.second);
+      patches.add_vertex(v.first, cells3d->cell_id(cell_of.at(v.first)), v.second);
   for (const auto &e : edges) patches.add_edge(e.lo, e.hi);
 
   std::map<tagint, double> vertex_growth;    // dl_i of every void-facing vertex
@@ -181,7 +188,7 @@ int FixMesophyll3dGrow::act()
     const int c = cell_of.at(v.first);
     vertex_growth[v.first] = DPoly::void_length_growth(
         rates.lambda, dl_std[c], edge_count[c], rates.c_length,
-        patches.mean_patch_area(hub->cell_id(c)), patches.patch_area(v.first), surface[c]);
+        patches.mean_patch_area(cells3d->cell_id(c)), patches.patch_area(v.first), surface[c]);
   }
   void_vertices = (int) vertex_growth.size();
 
