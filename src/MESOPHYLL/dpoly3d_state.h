@@ -67,6 +67,9 @@ namespace DPoly3d {
     int partner(int i, int column) const { return partners[i][column]; }
     double preferred_length(int i, int column) const { return lengths[i][column]; }
     double preferred_angle(int i, int column) const { return angles[i][column]; }
+    // growth changes an owned vertex's values (fix mesophyll3d/grow)
+    void set_preferred_length(int i, int column, double l0) { lengths[i][column] = l0; }
+    void set_preferred_angle(int i, int column, double theta0) { angles[i][column] = theta0; }
 
    private:
     int partner_index = -1, length_index = -1, angle_index = -1, ncolumns = 0;

@@ -63,6 +63,7 @@ class FixDPoly3dCells : public Fix, public DPoly::CellHub {
   // Per-cell values, identical on every rank, current after the last force evaluation.
   int ncells() const override { return (int) cell_ids.size(); }
   tagint cell_id(int cell) const override { return cell_ids[cell]; }    // the cell's molecule ID
+  int cell_index(tagint molecule) const;    // -1 if the molecule is not a cell
   double volume(int cell) const { return volumes[cell]; }
   double surface_area(int cell) const { return surface_areas[cell]; }
   double preferred_volume(int cell) const { return preferred_volumes[cell]; }
@@ -97,7 +98,6 @@ class FixDPoly3dCells : public Fix, public DPoly::CellHub {
   void check_finite_terms();
   void measure_cells();
   void apply_volume_forces(int vflag);
-  int cell_index(tagint molecule) const;
   // local indices of the images of a face's wing atoms nearest to its owned middle atom i
   void face_wings(int i, tagint a, tagint c, int &ja, int &jc);
 };

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_growth_rules.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
@@ -24,10 +25,9 @@
 using namespace LAMMPS_NS;
 
 FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, GROW, 5), delta_a(0.5), lambda(5.0), c_length(0.5),
-    c_bending(4.0), theta0_min(-MathConst::MY_PI / 10.0), shape_max(2.5), grow_above_max(1),
-    as_published(0), scale_diameters(1), need_box_relax(1), steps(0), void_vertices(0),
-    cells_above_max(0), packing_last(-1.0), compaction(0.0)
+    FixDPolyStage(lmp, narg, arg, GROW, 5), delta_a(0.5), shape_max(2.5), grow_above_max(1),
+    as_published(0), steps(0), void_vertices(0), cells_above_max(0), packing_last(-1.0),
+    compaction(0.0)
 {
   bool shape_max_given = false;
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
@@ -40,30 +40,7 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
     };
     if (strcmp(key, "delta_a") == 0)
       delta_a = number(0.0, false);
-    else if (strcmp(key, "lambda") == 0)
-      lambda = number(0.0, false);
-    else if (strcmp(key, "c_L") == 0) {
-      c_length = number(0.0, false);
-      if (c_length > 1.0)
-        error->all(FLERR, "Fix mesophyll/grow c_L must be in [0, 1], got {}", value);
-    } else if (strcmp(key, "c_B") == 0)
-      c_bending = number(0.0, false);
-    else if (strcmp(key, "theta0_min") == 0) {
-      theta0_min = utils::numeric(FLERR, value, false, lmp);
-      // a lower bound for theta0 of void-facing vertices, which growth lowers toward it
-      if (!(theta0_min > -MathConst::MY_PI && theta0_min <= MathConst::MY_PI))
-        error->all(FLERR,
-                   "Fix mesophyll/grow theta0_min must be a turning angle in (-pi, pi] radians "
-                   "(the lower bound of theta0 at void-facing vertices; the paper's is -pi/10), "
-                   "got {}",
-                   value);
-      if (theta0_min > 0.0 && comm->me == 0)
-        error->warning(FLERR,
-                       "Fix mesophyll/grow theta0_min = {} > 0: every void-facing vertex whose "
-                       "theta0 is below it is raised to it (made convex) instead of bounded; "
-                       "use a value <= 0 (the paper's is -pi/10) unless that is meant",
-                       value);
-    } else if (strcmp(key, "calA_max") == 0) {
+    else if (strcmp(key, "calA_max") == 0) {
       shape_max = number(0.0, true);
       shape_max_given = true;
     } else if (strcmp(key, "rules") == 0) {
@@ -77,12 +54,8 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
                    value);
       grow_above_max = paper ? 0 : 1;
       if (!shape_max_given) shape_max = paper ? 3.0 : 2.5;
-    } else if (strcmp(key, "scale_sigma") == 0)
-      scale_diameters = utils::logical(FLERR, value, false, lmp);
-    else if (strcmp(key, "box") == 0)
-      need_box_relax = one_of(key, value, "relax", "fixed") == 0;
-    else
-      return false;
+    } else
+      return rates.read(lmp, style, key, value);
     return true;
   });
 }
@@ -90,13 +63,7 @@ FixMesophyllGrow::FixMesophyllGrow(LAMMPS *lmp, int narg, char **arg) :
 void FixMesophyllGrow::init()
 {
   FixDPolyStage::init();
-  // the protocol minimizes the enthalpy at constant pressure; growing in a fixed box is a
-  // different experiment, and must be asked for
-  if (need_box_relax && modify->get_fix_by_style("^box/relax").empty())
-    error->all(FLERR,
-               "Fix mesophyll/grow {} needs fix box/relax (the growth protocol relaxes the box at "
-               "constant pressure); use 'box fixed' to grow in a fixed box",
-               id);
+  rates.check_box(lmp, style, id);
 }
 
 /* ----------------------------------------------------------------------
@@ -142,7 +109,7 @@ int FixMesophyllGrow::act()
     state.preferred_length[i] += length_growth[t];
     state.preferred_angle[i] = new_angle[t];
     const double a0 = state.preferred_area[i];
-    if (scale_diameters) state.diameter[i] *= sqrt((a0 + delta_a) / a0);
+    if (rates.scale_diameters) state.diameter[i] *= sqrt((a0 + delta_a) / a0);
     state.preferred_area[i] = a0 + delta_a;
   }
   steps++;
@@ -218,24 +185,26 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
 
   std::vector<double> dl(n, 0.0), angle(n);
   for (int k = 0; k < n; k++) angle[k] = vertex[ring[k]]->preferred_angle;
-  const double drift = c_bending * dl_std / n, smoothing = dl_std / n;
+  const double theta0_min = rates.theta0_min;
+  const double drift = rates.c_bending * dl_std / n, smoothing = dl_std / n;
   auto drift_down = [&](int k) {
     if (!as_published)
-      angle[k] = std::max(theta0_min, angle[k] - drift);
+      angle[k] = DPoly::drifted_angle(angle[k], drift, theta0_min);
     else    // the published code: the full step from above the bound, to the bound from below
       angle[k] = angle[k] > theta0_min ? angle[k] - drift : theta0_min;
   };
   // theta0 at k relaxed toward its ring neighbours' current values
   auto relaxed = [&](int k) {
     const int before = (k + n - 1) % n, after = (k + 1) % n;
-    return angle[k] + smoothing * ((angle[after] - angle[k]) + (angle[before] - angle[k]));
+    return DPoly::relaxed_angle(angle[k], smoothing,
+                                (angle[after] - angle[k]) + (angle[before] - angle[k]));
   };
   for (int k = 0; k < n; k++) {
     if (is_void(k)) {
       void_vertices++;
       if (shape < shape_max)
-        dl[k] =
-            lambda * dl_std / n * ((1.0 - c_length) + c_length * (mean_run - run_length[k]) / p);
+        dl[k] = DPoly::void_length_growth(rates.lambda, dl_std, n, rates.c_length, mean_run,
+                                          run_length[k], p);
       else
         dl[k] = grow_above_max ? dl_std / n : 0.0;
       drift_down(k);

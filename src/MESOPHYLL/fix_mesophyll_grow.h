@@ -12,6 +12,7 @@ FixStyle(mesophyll/grow,FixMesophyllGrow);
 #ifndef LMP_FIX_MESOPHYLL_GROW_H
 #define LMP_FIX_MESOPHYLL_GROW_H
 
+#include "dpoly_growth_rules.h"
 #include "fix_dpoly_stage.h"
 
 #include <unordered_map>
@@ -44,11 +45,10 @@ class FixMesophyllGrow : public FixDPolyStage {
   std::vector<double> restart_state() const override;
   bool restore_state(const std::vector<double> &) override;
 
-  double delta_a, lambda, c_length, c_bending, theta0_min, shape_max;
+  DPoly::GrowthRates rates;    // lambda, c_L, c_B, theta0_min, scale_sigma, box
+  double delta_a, shape_max;
   int grow_above_max;    // above shape_max: isometric growth (authors' code) or none (paper)
   int as_published;      // rules published: the published code's run lengths, drift, smoothing
-  int scale_diameters;
-  int need_box_relax;
   bigint steps;
   int void_vertices, cells_above_max;
   double packing_last;    // phi at the last minimum (-1 before the first)
