@@ -339,6 +339,10 @@ TEST_F(BadInputAdhesion3d, ErrorsNameTheProblem)
                  {"adhere_cells all 2\nadhere_cells all 2", "are already bonded"},
                  {"fix grow all mesophyll/grow delta_a 0.5\nrun 0 post no",
                   "acts on polygons only: it needs fix dpoly/cells, not fix dpoly3d/cells"},
+                 // 'pre no' skips init(): the stage runner itself must refuse the 2d stage
+                 {"run 0 post no\nfix grow all mesophyll/grow delta_a 0.5 runs yes\n"
+                  "run 1 pre no post no",
+                  "acts on polygons only: it needs fix dpoly/cells, not fix dpoly3d/cells"},
                  {"unfix cells\nrun 0 post no",
                   "needs fix dpoly/cells (polygons) or fix dpoly3d/cells (polyhedra)"}});
 }

@@ -164,6 +164,12 @@ TEST(Slice3d, PlanesThroughVerticesEdgesAndFaces)
   EXPECT_NEAR(value(*octahedron, "sections", 1), 2.0 * r * r, 1.0e-13);
   EXPECT_NEAR(value(*octahedron, "sections", 2), 4.0 * sqrt(2.0) * r, 1.0e-13);
   EXPECT_EQ(value(*octahedron, "slice", BONDS_OR_SECTIONS), 1.0);
+  // through the top vertex (z = 6.5): the plane touches the cell without cutting it, so neither
+  // a cross-section nor a hole
+  auto apex = measured("octahedron.data", "planes 1 offset 0.65");
+  EXPECT_EQ(value(*apex, "slice", BONDS_OR_SECTIONS), 0.0);
+  EXPECT_EQ(value(*apex, "slice", CELLS_OR_HOLES), 0.0);
+  EXPECT_EQ(value(*apex, "slice", PHI), 0.0);
 
   auto faces = measured("cube.data", "planes 5 offset 0.0");
   EXPECT_EQ(value(*faces, "slice", BONDS_OR_SECTIONS), 1.0);

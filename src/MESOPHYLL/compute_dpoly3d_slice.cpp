@@ -24,6 +24,9 @@
 #include <stdexcept>
 
 using namespace LAMMPS_NS;
+
+// |area| / perimeter^2 below which an outline encloses nothing (round-off of a zero area)
+static constexpr double DEGENERATE_AREA = 1.0e-12;
 using DPoly3d::Outline;
 
 namespace {
@@ -154,6 +157,10 @@ ComputeDPoly3dSlice::Slices ComputeDPoly3dSlice::slice()
     if (!std::isfinite(o.area) || !std::isfinite(o.perimeter))
       error->all(FLERR, "{} {} at step {}: a cross-section of cell {} has a non-finite size", STYLE,
                  id, update->ntimestep, o.cell);
+    // a plane through a cell's top vertex or along its top edge touches the surface without
+    // cutting it: the outline encloses nothing (zero area up to round-off) and is neither a
+    // cross-section nor a hole
+    if (std::fabs(o.area) <= DEGENERATE_AREA * o.perimeter * o.perimeter) continue;
     result.area += o.area;
     if (o.area > 0.0)
       outer.push_back(&o);

@@ -168,7 +168,12 @@ double *FixDPoly3dCells::vertex_diameters()
 std::vector<tagint> FixDPoly3dCells::surface_neighbours(tagint atom) const
 {
   const auto found = edge_partners.find(atom);
-  return found == edge_partners.end() ? std::vector<tagint>() : found->second;
+  if (found == edge_partners.end())
+    error->all(FLERR,
+               "{} {}: atom {} is not a vertex of its cells (group {}), but an adhesive bond "
+               "reaches it: bond only vertices of the hub's group",
+               STYLE, id, atom, group->names[igroup]);
+  return found->second;
 }
 
 // these two bracket LAMMPS's image-flag check at the setup of a run or minimization: the adhesive

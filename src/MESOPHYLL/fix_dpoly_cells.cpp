@@ -129,8 +129,13 @@ double *FixDPolyCells::vertex_diameters()
 
 std::vector<tagint> FixDPolyCells::surface_neighbours(tagint atom) const
 {
-  const RingNeighbours &ring = ring_neighbours(atom);
-  return {ring.prev, ring.next};
+  const auto found = rings.find(atom);
+  if (found == rings.end())
+    error->all(FLERR,
+               "Fix dpoly/cells {}: atom {} is not a vertex of its cells (group {}), but an "
+               "adhesive bond reaches it: bond only vertices of the hub's group",
+               id, atom, group->names[igroup]);
+  return {found->second.prev, found->second.next};
 }
 
 /* ----------------------------------------------------------------------

@@ -66,6 +66,12 @@ std::vector<FixDPolyStage *> FixDPolyStage::attach_all(LAMMPS *lmp, Fix *hub_fix
                         stage->style, stage->id, lmp->group->names[stage->igroup],
                         hub_fix->style, hub_fix->id, lmp->group->names[hub_fix->igroup],
                         lmp->group->names[hub_fix->igroup]);
+      // also here, not only in init(): 'run N pre no' attaches without a new init()
+      if (hub->cell_dimension() == 3 && !stage->acts_on_polyhedra())
+        lmp->error->all(FLERR,
+                        "Fix {} acts on polygons only: it needs fix dpoly/cells, not fix "
+                        "dpoly3d/cells",
+                        stage->style);
       stage->attach(hub, polygons);
       stages.push_back(stage);
     }
