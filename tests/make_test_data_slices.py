@@ -47,7 +47,7 @@ def octahedron(radius):
 
 def cup():
     """A 4 x 4 x 2 block (z from -1 to 1) with a 2 x 2 well from its top down to z = 0, faces
-    ordered counter-clockwise from outside (not convex: oriented by propagation, below)."""
+    ordered counter-clockwise from outside (not convex, so written out by hand below)."""
     def square(h, z):
         return [(-h, -h, z), (h, -h, z), (h, h, z), (-h, h, z)]
     points = square(2.0, -1.0) + square(2.0, 1.0) + square(1.0, 1.0) + square(1.0, 0.0)

@@ -311,13 +311,27 @@ def slice_png(path, frame, outlines, offset):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.patches import Polygon
+    from matplotlib.path import Path
     fig, ax = plt.subplots(figsize=(6, 6 * frame.length[1] / frame.length[0]))
     colours = plt.get_cmap("tab20")
-    for cell, xy in outlines:
+
+    def is_hole(k):
+        # VTK's outlines carry no orientation: an outline inside an odd number of the same
+        # cell's other outlines is a hole (a cup cut through its well), drawn in white
+        cell, xy = outlines[k]
+        inside = sum(Path(other).contains_point(xy[0]) for m, (c, other) in enumerate(outlines)
+                     if m != k and c == cell)
+        return inside % 2 == 1
+
+    # outer outlines first, so that the holes are drawn over them
+    order = sorted(range(len(outlines)), key=is_hole)
+    for k in order:
+        cell, xy = outlines[k]
+        face = "white" if is_hole(k) else colours(cell % 20)
         for i in (-1, 0, 1):
             for j in (-1, 0, 1):
                 shift = np.array([i * frame.length[0], j * frame.length[1]])
-                ax.add_patch(Polygon(xy + shift, closed=True, facecolor=colours(cell % 20),
+                ax.add_patch(Polygon(xy + shift, closed=True, facecolor=face,
                                      edgecolor="black", linewidth=0.6, alpha=0.85))
     ax.set_xlim(frame.lo[0], frame.lo[0] + frame.length[0])
     ax.set_ylim(frame.lo[1], frame.lo[1] + frame.length[1])
