@@ -122,6 +122,18 @@ TEST(Growth3d, GrowsAfterMinimizations)
   EXPECT_EQ(s.thermo("f_grow[1]"), 1.0);
 }
 
+// defined after a first run and reached by 'run N pre no', which skips init(): the fix takes the
+// hub and the state from the hub that attaches it (was a null dereference)
+TEST(Growth3d, GrowsWhenARunSkipsInit)
+{
+  LammpsSession s;
+  s.run(cells3d(data_file("icosahedron.data")) + "run 0 post no");
+  const EdgeState before = state_of(s);
+  s.run("fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.5\nrun 0 pre no post no");
+  EXPECT_DOUBLE_EQ(state_of(s).v0[0], before.v0[0] + 0.5);
+  EXPECT_EQ(s.thermo("f_grow[1]"), 1.0);
+}
+
 TEST(Growth3d, ThetaZeroStopsAtItsBound)
 {
   LammpsSession s;

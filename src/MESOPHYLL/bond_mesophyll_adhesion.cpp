@@ -25,7 +25,7 @@ using DPoly::AdhesiveBond;
 
 BondMesophyllAdhesion::BondMesophyllAdhesion(LAMMPS *lmp) :
     PerTypeStiffness(lmp, "Bond style mesophyll/adhesion", "eps_c", &Atom::nbondtypes),
-    rule(ContactRule::BONDS), hub(nullptr)
+    rule(ContactRule::BONDS)
 {
   born_matrix_enable = 1;
 }
@@ -61,14 +61,14 @@ BondMesophyllAdhesion *BondMesophyllAdhesion::find(LAMMPS *lmp, const std::strin
 // the hub recounts the contacts at every run start: without it they would never be counted
 void BondMesophyllAdhesion::init_style()
 {
-  hub = DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion");
+  DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion");
 }
 
-// single() may come before any run
+// looked up at every call, not kept: single() and born_matrix() may come before any run, or
+// after 'unfix' of the hub without a new init
 double *BondMesophyllAdhesion::vertex_diameters()
 {
-  if (!hub) hub = DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion");
-  return hub->vertex_diameters();
+  return DPoly::CellHub::find(lmp, "Bond style mesophyll/adhesion")->vertex_diameters();
 }
 
 double BondMesophyllAdhesion::contact_number(const DPoly::AdhesionCounts &from, tagint cell1,

@@ -64,7 +64,6 @@ class BondMesophyllAdhesion : public DPoly::PerTypeStiffness<Bond>, public DPoly
   enum class ContactRule { BONDS, CELLS };
   ContactRule rule;
   DPoly::AdhesionCounts contacts;
-  DPoly::CellHub *hub;    // found at init_style(); sigma comes from it
   double *vertex_diameters();
   double contact_number(int i, int j);
 };

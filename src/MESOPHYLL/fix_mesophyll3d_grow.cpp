@@ -62,9 +62,20 @@ void FixMesophyll3dGrow::init()
                "{} grows polyhedra: it needs fix dpoly3d/cells (2d cells grow with fix "
                "mesophyll/grow)",
                STYLE);
-  cells3d = dynamic_cast<FixDPoly3dCells *>(hubs.front());
   FixDPolyStage::init();
   rates.check_box(lmp, style, id);
+  bind(dynamic_cast<DPoly::CellHub *>(hubs.front()));
+}
+
+// the 3d hub and the per-vertex and per-edge state this fix reads and writes
+void FixMesophyll3dGrow::bind(DPoly::CellHub *cell_hub)
+{
+  cells3d = dynamic_cast<FixDPoly3dCells *>(cell_hub);
+  if (!cells3d)
+    error->all(FLERR,
+               "{} grows polyhedra: it needs fix dpoly3d/cells (2d cells grow with fix "
+               "mesophyll/grow)",
+               STYLE);
   vertex_state.find(atom, error, STYLE);
   edge_values.find(atom, error, STYLE);
 }
@@ -140,6 +151,8 @@ void FixMesophyll3dGrow::gather_surfaces(std::vector<EdgeGrowth> &edges,
 
 int FixMesophyll3dGrow::act()
 {
+  // the hub that attached this stage, not the one init() found: 'run N pre no' skips init()
+  bind(hub);
   std::vector<EdgeGrowth> edges;
   std::vector<FaceArea> faces;
   gather_surfaces(edges, faces);

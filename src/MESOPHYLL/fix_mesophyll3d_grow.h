@@ -53,6 +53,7 @@ class FixMesophyll3dGrow : public FixDPolyStage {
   bigint steps;
   int void_vertices, void_edges;
 
+  void bind(DPoly::CellHub *cell_hub);
   void gather_surfaces(std::vector<EdgeGrowth> &edges, std::vector<FaceArea> &faces);
   std::vector<double> restart_state() const override;
   bool restore_state(const std::vector<double> &) override;
