@@ -300,6 +300,9 @@ def write_report(runs, out, quick):
     path = os.path.join(out, "validation.md")
     _, kept = split_published_section(path)
     sweeps = marked_section(path, SWEEPS_BEGIN, SWEEPS_END)
+    threed = marked_section(path, THREED_BEGIN, THREED_END)
+    if threed:  # written by hand: split_published_section left it in the text it drops
+        kept += threed
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n" + (sweeps + "\n" if sweeps else "") + kept)
     print(f"wrote {path} and three PNGs")
@@ -307,6 +310,8 @@ def write_report(runs, out, quick):
 
 PUB_BEGIN, PUB_END = "<!-- published: tools/validate.py --published -->", "<!-- /published -->"
 SWEEPS_BEGIN, SWEEPS_END = "<!-- sweeps: tools/sweep_report.py -->", "<!-- /sweeps -->"
+THREED_BEGIN, THREED_END = ("<!-- 3d: examples/polyhedra/in.grow_tissue3d, written by hand -->",
+                            "<!-- /3d -->")
 
 
 def marked_section(path, begin, end):
