@@ -11,7 +11,6 @@
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly3d_cells.h"
-#include "math_const.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -196,7 +195,7 @@ void ComputeDPoly3dSlice::compute_vector()
   const Slices s = slice();
   double shape = 0.0, neighbours = 0.0;
   for (const auto &c : s.sections) {
-    shape += c.perimeter * c.perimeter / (4.0 * MathConst::MY_PI * c.area);
+    shape += DPoly::shape_index(c.perimeter, c.area);
     neighbours += c.neighbours;
   }
   const int n = (int) s.sections.size();
@@ -222,7 +221,7 @@ void ComputeDPoly3dSlice::compute_local()
     per_section[k][CELL] = c.cell;
     per_section[k][AREA] = c.area;
     per_section[k][PERIMETER] = c.perimeter;
-    per_section[k][SHAPE] = c.perimeter * c.perimeter / (4.0 * MathConst::MY_PI * c.area);
+    per_section[k][SHAPE] = DPoly::shape_index(c.perimeter, c.area);
     per_section[k][NEIGHBOURS] = c.neighbours;
   }
   size_local_rows = rows;

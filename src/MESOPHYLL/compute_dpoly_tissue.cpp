@@ -189,7 +189,7 @@ void ComputeDPolyTissue::compute_vector()
   for (int c = 0; c < n; c++) {
     area += cells->area(c);
     patch += m.patch_area[c];
-    shape += cells->perimeter(c) * cells->perimeter(c) / (4.0 * MathConst::MY_PI * cells->area(c));
+    shape += DPoly::shape_index(cells->perimeter(c), cells->area(c));
     neighbours += m.neighbours[c];
     bonds += adhesion.cell_bonds(cells->cell_id(c));
   }
@@ -215,7 +215,7 @@ void ComputeDPolyTissue::compute_array()
     per_cell[c][ID] = cells->cell_id(c);
     per_cell[c][AREA] = a;
     per_cell[c][PERIMETER] = p;
-    per_cell[c][SHAPE] = p * p / (4.0 * MathConst::MY_PI * a);
+    per_cell[c][SHAPE] = DPoly::shape_index(p, a);
     per_cell[c][NEIGHBOURS] = m.neighbours[c];
     per_cell[c][VOID_FRACTION] = m.void_fraction[c];
   }

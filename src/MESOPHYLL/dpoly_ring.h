@@ -20,6 +20,7 @@
 #define LMP_DPOLY_RING_H
 
 #include "lmptype.h"
+#include "math_const.h"
 
 #include <mpi.h>
 
@@ -84,6 +85,12 @@ namespace DPoly {
   inline double turning_angle(const double *d_in, const double *d_out)
   {
     return atan2(d_in[0] * d_out[1] - d_in[1] * d_out[0], d_in[0] * d_out[0] + d_in[1] * d_out[1]);
+  }
+
+  // Shape index p^2/(4 pi a) of a polygon of perimeter p and area a: 1 for a circle.
+  inline double shape_index(double perimeter, double area)
+  {
+    return perimeter * perimeter / (4.0 * MathConst::MY_PI * area);
   }
 
   // Names of the custom properties, for messages and documentation.

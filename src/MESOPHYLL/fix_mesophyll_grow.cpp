@@ -13,7 +13,6 @@
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_cells.h"
-#include "math_const.h"
 #include "modify.h"
 
 #include <algorithm>
@@ -128,7 +127,7 @@ void FixMesophyllGrow::grow_ring(int c, std::unordered_map<tagint, const VertexG
   const int n = (int) ring.size();
   const double p = cells->perimeter(c), a = cells->area(c);
   const double dl_std = 0.5 * (p / a) * delta_a;
-  const double shape = p * p / (4.0 * MathConst::MY_PI * a);
+  const double shape = DPoly::shape_index(p, a);
   if (shape >= shape_max) cells_above_max++;
   const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   auto is_void = [&](int k) {
