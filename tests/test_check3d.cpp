@@ -227,3 +227,30 @@ TEST(Check3d, WindingNumberOfACube)
   EXPECT_NEAR(w(-0.2, -0.2, -0.2), 0.0, 1.0e-12);
   EXPECT_NEAR(w(3.0, 0.5, 0.5), 0.0, 1.0e-12);
 }
+
+// The numeric keywords and coefficients of the 3d styles refuse values that would be inf or nan:
+// LAMMPS's reader (utils::numeric) stops with the value named, before a style sees it.
+class NonFiniteInput3d : public ErrorTest {};
+
+TEST_F(NonFiniteInput3d, IsRefusedWithItsName)
+{
+  const std::string base = polyhedra_commands(data_file("icosahedron.data"));
+  expect_errors(
+      base,
+      {{"fix more all dpoly3d/cells eps_v 1e400",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {"bond_coeff * 1e400",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {"dihedral_coeff * -1e400",
+        "Floating point number -1e400 in input script or data file is out of range"},
+       {"pair_style dpoly3d/contact\npair_coeff * * 1e400",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {"fix check all dpoly/check pressure 1e400",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {"fix check all dpoly/check tolerance inf",
+        "Expected floating point parameter instead of 'inf' in input script"},
+       {"fix more all dpoly3d/cells eps_v nan",
+        "Expected floating point parameter instead of 'nan' in input script"},
+       {"fix check all dpoly/check tolerance 1e400",
+        "Floating point number 1e400 in input script or data file is out of range"}});
+}

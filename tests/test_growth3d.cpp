@@ -410,8 +410,21 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow lambda must be >= 0, got -1"},
        {std::string(grow) + "delta_V 0.1 c_L 2\n",
         "Fix mesophyll3d/grow c_L must be in [0, 1], got 2"},
+       // in 3d theta0 is an edge's dihedral angle (a turning angle is a 2d ring's)
        {std::string(grow) + "delta_V 0.1 theta0_min 4\n",
-        "Fix mesophyll3d/grow theta0_min must be a turning angle"},
+        "Fix mesophyll3d/grow theta0_min must be a dihedral angle in (-pi, pi] radians (the lower "
+        "bound of theta0 at void-facing edges"},
+       // 1e400 would be inf: LAMMPS's reader (utils::numeric) refuses it, naming the value
+       {std::string(grow) + "delta_V 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 lambda 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 c_L -1e400\n",
+        "Floating point number -1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 c_B 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 theta0_min -1e400\n",
+        "Floating point number -1e400 in input script or data file is out of range"},
        {std::string(grow) + "delta_V 0.1 box free\n",
         "Fix mesophyll3d/grow box must be 'relax' or 'fixed', got 'free'"},
        {std::string(grow) + "delta_V 0.1 speed 2\n", "Unknown fix mesophyll3d/grow keyword: speed"},
