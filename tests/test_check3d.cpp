@@ -235,22 +235,21 @@ class NonFiniteInput3d : public ErrorTest {};
 TEST_F(NonFiniteInput3d, IsRefusedWithItsName)
 {
   const std::string base = polyhedra_commands(data_file("icosahedron.data"));
-  expect_errors(
-      base,
-      {{"fix more all dpoly3d/cells eps_v 1e400",
-        "Floating point number 1e400 in input script or data file is out of range"},
-       {"bond_coeff * 1e400",
-        "Floating point number 1e400 in input script or data file is out of range"},
-       {"dihedral_coeff * -1e400",
-        "Floating point number -1e400 in input script or data file is out of range"},
-       {"pair_style dpoly3d/contact\npair_coeff * * 1e400",
-        "Floating point number 1e400 in input script or data file is out of range"},
-       {"fix check all dpoly/check pressure 1e400",
-        "Floating point number 1e400 in input script or data file is out of range"},
-       {"fix check all dpoly/check tolerance inf",
-        "Expected floating point parameter instead of 'inf' in input script"},
-       {"fix more all dpoly3d/cells eps_v nan",
-        "Expected floating point parameter instead of 'nan' in input script"},
-       {"fix check all dpoly/check tolerance 1e400",
-        "Floating point number 1e400 in input script or data file is out of range"}});
+  expect_errors(base,
+                {{"fix more all dpoly3d/cells eps_v 1e400",
+                  "Floating point number 1e400 in input script or data file is out of range"},
+                 {"bond_coeff * 1e400",
+                  "Floating point number 1e400 in input script or data file is out of range"},
+                 {"dihedral_coeff * -1e400",
+                  "Floating point number -1e400 in input script or data file is out of range"},
+                 {"pair_style dpoly3d/contact\npair_coeff * * 1e400",
+                  "Floating point number 1e400 in input script or data file is out of range"},
+                 {"fix check all dpoly/check pressure 1e400",
+                  "Floating point number 1e400 in input script or data file is out of range"},
+                 {"fix check all dpoly/check tolerance inf",
+                  "Expected floating point parameter instead of 'inf' in input script"},
+                 {"fix more all dpoly3d/cells eps_v nan",
+                  "Expected floating point parameter instead of 'nan' in input script"},
+                 {"fix check all dpoly/check tolerance 1e400",
+                  "Floating point number 1e400 in input script or data file is out of range"}});
 }
