@@ -20,6 +20,9 @@ configs = {
     # different numbers of vertex pairs: adhesion, contact numbers per cell, breaking
     "cells3d_adhesive.data": ["--cells", "3", "--level", "1", "--jitter", "0.05", "--seed", "4",
                               "--spacing", "0.95", "--box", "5.0", "--shift", "0.35"],
+    # two regular icosahedra, the second the first moved by 1.26 (1.2 sigma) in x: hand-made
+    # adhesive bonds between counterparts, all stretched alike (breaking at junction edges)
+    "two_icosahedra.data": ["--cells", "2", "--level", "0", "--spacing", "0.63", "--box", "6.0"],
     # one 642-vertex cell: data-file lines of full-precision per-edge values
     "icosphere3.data": ["--cells", "1", "--level", "3", "--spacing", "2.0"],
 }

@@ -266,6 +266,67 @@ TEST(Adhesion3d, BreakingTakesTheBondsStretchedPastTheThreshold)
   EXPECT_EQ(adhesive_bonds(*s, "break_after3d.data"), kept);
 }
 
+namespace {
+// Two icosahedra, the second the first moved by 1.26 = 1.2 sigma in x (vertex i + 12 is vertex
+// i's counterpart), bonded counterpart to counterpart over vertex 1 and its five edge partners.
+std::unique_ptr<LammpsSession> bonded_patch(std::set<Bond> &patch)
+{
+  auto s = std::make_unique<LammpsSession>();
+  s->run("units lj\ndimension 3\natom_style molecular\natom_modify map array\nboundary p p p\n"
+         "fix Vertices all property/atom d_sigma d_v0 ghost yes\n"
+         "fix Edges all property/atom i2_edge 6 ghost yes\n"
+         "fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes\n"
+         "fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes\n"
+         "bond_style hybrid dpoly3d/edge mesophyll/adhesion\n"
+         "angle_style zero\ndihedral_style dpoly3d/hinge\nread_data " +
+         data_file("two_icosahedra.data") +
+         " fix Vertices NULL Vertices fix Edges NULL Edges fix EdgeLengths NULL EdgeLengths"
+         " fix EdgeAngles NULL EdgeAngles extra/bond/types 1 extra/bond/per/atom 12"
+         " extra/special/per/atom 40\n"
+         "bond_coeff 1 dpoly3d/edge 1.0\nbond_coeff 2 mesophyll/adhesion 0.8\n"
+         "angle_coeff *\ndihedral_coeff * 0.4\ncomm_modify cutoff 2.0\n"
+         "fix cells all dpoly3d/cells eps_v 1.0\n");
+  // vertex 1's edge partners: it is the lowest ID, so its own i2_edge columns list them all
+  const std::vector<int> columns = s->gather_int("i2_edge", 6);
+  std::vector<int> vertices = {1};
+  for (int k = 0; k < 6; k++)
+    if (columns[k] > 0) vertices.push_back(columns[k]);
+  std::string bonds;
+  for (int v : vertices) {
+    bonds += "create_bonds single/bond 2 " + std::to_string(v) + " " + std::to_string(v + 12) +
+        "\n";
+    patch.insert({v, v + 12});
+  }
+  s->run(bonds);
+  return s;
+}
+}    // namespace
+
+// The junction-edge rule in 3d ('edges yes'): a bond below the threshold is tested, and can
+// break, only if an edge partner of one of its vertices has no adhesive bond. In the bonded patch
+// above, 1-13 is interior (every edge partner of 1 and of 13 is bonded) and the five other bonds
+// are at the edge of the junction. All six are stretched alike (r/s = 1.2, below the threshold)
+// and beta is so small that a bond tested breaks (the draw is below exp(-1e-12 dE) for every
+// seed): with 'edges yes' the five edge bonds break and 1-13 stays (bonds are taken in ID order,
+// so 1-13 is decided first, while its neighbours are still bonded); with 'edges no' all six go.
+TEST(Adhesion3d, JunctionEdgeRuleSparesTheInteriorBond)
+{
+  for (const char *edges : {"yes", "no"}) {
+    std::set<Bond> patch;
+    auto s = bonded_patch(patch);
+    ASSERT_EQ(patch.size(), 6u) << "an icosahedron vertex has five edge partners";
+    ASSERT_EQ(adhesive_bonds(*s, "junction_before3d.data"), patch);
+    s->run(std::string("fix break all mesophyll/break 3 beta 1.0e-12 runs yes edges ") + edges +
+           "\nrun 0 post no\n");
+    const std::set<Bond> left = adhesive_bonds(*s, "junction_after3d.data");
+    const bool edge_only = std::string(edges) == "yes";
+    const std::set<Bond> interior = {{1, 13}}, none;
+    EXPECT_EQ(left, edge_only ? interior : none) << "edges " << edges;
+    EXPECT_EQ(s->equal_variable("f_break[1]"), 0.0) << "none reached the threshold";
+    EXPECT_EQ(s->equal_variable("f_break[2]"), edge_only ? 5.0 : 6.0);
+  }
+}
+
 // Stochastic breaking at the edges of junctions (a bonded vertex with an edge partner that has no
 // adhesive bond) draws from the seed and the atom IDs: the same bonds break on any number of
 // ranks, and some break without reaching the threshold.

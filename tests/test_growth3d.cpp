@@ -30,22 +30,6 @@ namespace {
 
 const int COLUMNS = 6;    // i2_edge, d2_edge_l0, d2_edge_theta0 columns
 
-std::string cells3d(const std::string &data)
-{
-  return "units lj\ndimension 3\natom_style molecular\natom_modify map array\nboundary p p p\n"
-         "fix Vertices all property/atom d_sigma d_v0 ghost yes\n"
-         "fix Edges all property/atom i2_edge 6 ghost yes\n"
-         "fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes\n"
-         "fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes\n"
-         "bond_style dpoly3d/edge\nangle_style zero\ndihedral_style dpoly3d/hinge\n"
-         "read_data " +
-      data +
-      " fix Vertices NULL Vertices fix Edges NULL Edges fix EdgeLengths NULL EdgeLengths fix "
-      "EdgeAngles NULL EdgeAngles\n"
-      "bond_coeff * 1.0\nangle_coeff *\ndihedral_coeff * 0.4\ncomm_modify cutoff 2.0\n"
-      "fix cells all dpoly3d/cells eps_v 1.0\nthermo_modify norm no\n";
-}
-
 // one growth step after a zero-step run (the stage acts after MD runs with 'runs yes')
 const char *GROW_ONCE = "run 0 post no\n";
 
@@ -78,7 +62,7 @@ double isometric_edge_growth(double delta_volume)
 TEST(Growth3d, IcosahedronGrowsEveryEdgeAlike)
 {
   LammpsSession s;
-  s.run(cells3d(data_file("icosahedron.data")));
+  s.run(polyhedra_commands(data_file("icosahedron.data")));
   const EdgeState before = state_of(s);
   const double delta_volume = 0.3, lambda = 3.0, c_length = 0.25, c_bending = 2.0;
   s.run("fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.3 lambda 3 c_L 0.25 c_B 2 "
@@ -112,7 +96,7 @@ TEST(Growth3d, IcosahedronGrowsEveryEdgeAlike)
 TEST(Growth3d, GrowsAfterMinimizations)
 {
   LammpsSession s;
-  s.run(cells3d(data_file("icosahedron.data")));
+  s.run(polyhedra_commands(data_file("icosahedron.data")));
   const EdgeState before = state_of(s);
   s.run("fix grow all mesophyll3d/grow box fixed delta_V 0.5\nrun 0 post no");
   EXPECT_EQ(state_of(s).v0, before.v0);
@@ -127,17 +111,51 @@ TEST(Growth3d, GrowsAfterMinimizations)
 TEST(Growth3d, GrowsWhenARunSkipsInit)
 {
   LammpsSession s;
-  s.run(cells3d(data_file("icosahedron.data")) + "run 0 post no");
+  s.run(polyhedra_commands(data_file("icosahedron.data")) + "run 0 post no");
   const EdgeState before = state_of(s);
   s.run("fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.5\nrun 0 pre no post no");
   EXPECT_DOUBLE_EQ(state_of(s).v0[0], before.v0[0] + 0.5);
   EXPECT_EQ(s.thermo("f_grow[1]"), 1.0);
 }
 
+namespace {
+// The icosahedron moved so that a vertex lies 0.014 inside each processor boundary through the
+// box centre (x, y or z = 2, however the ranks split the box), with v0 = 1.5 V and soft edges:
+// relaxing, it swells, those vertices cross to the next rank's subdomain (by 0.047), and the
+// skin of 1 keeps the minimizer from re-neighbouring, so the atoms migrate only when the growth
+// stage brings the ghosts up to date after the minimum.
+std::string swelling_icosahedron(bool grow)
+{
+  return polyhedra_commands(data_file("icosahedron.data")) +
+      "neighbor 1.0 bin\nbond_coeff * 0.05\ndisplace_atoms all move 0.54 0.54 0.54 units box\n"
+      "set group all d_v0 3.8\nthermo_style custom step pe fnorm fmax\nmin_style fire\n" +
+      (grow ? "fix grow all mesophyll3d/grow box fixed delta_V 0.1\n" : "") +
+      "minimize 0.0 1.0e-8 10000 100000\n";
+}
+}    // namespace
+
+// After the stages, atom->f (thermo fnorm and fmax, the minimizer's final force norm, a dump's
+// fx) still holds the minimum's forces, each on its own atom: LAMMPS migrates no forces, so the
+// stage's re-neighbouring used to leave other atoms' forces, or none, on several ranks (the
+// same minimization without a stage is the reference: stages act only after it).
+TEST(Growth3d, ForcesAfterTheStagesAreTheMinimums)
+{
+  LammpsSession grown, plain;
+  grown.run(swelling_icosahedron(true));
+  plain.run(swelling_icosahedron(false));
+  ASSERT_EQ(grown.thermo("f_grow[1]"), 1.0) << "the stage acted";
+  const std::vector<double> f_grown = grown.gather("f", 3), f_plain = plain.gather("f", 3);
+  EXPECT_EQ(f_grown, f_plain);
+  // the same forces, summed in another order where atoms migrated
+  EXPECT_NEAR(grown.thermo("fnorm"), plain.thermo("fnorm"), 1.0e-12 * plain.thermo("fnorm"));
+  EXPECT_EQ(grown.thermo("fmax"), plain.thermo("fmax"));
+  EXPECT_LT(plain.thermo("fnorm"), 1.0e-7) << "converged on ftol";
+}
+
 TEST(Growth3d, ThetaZeroStopsAtItsBound)
 {
   LammpsSession s;
-  s.run(cells3d(data_file("icosahedron.data")));
+  s.run(polyhedra_commands(data_file("icosahedron.data")));
   const EdgeState before = state_of(s);
   // the drift c_B dl_std/E = 4 x 0.0691... would take theta0 from 0.7297 to about 0.45
   s.run("fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.5 theta0_min 0.6\n" +
@@ -159,7 +177,7 @@ TEST(Growth3d, ThetaZeroStopsAtItsBound)
 TEST(Growth3d, SmoothingReachesTheFourEdgesOfTheTwoFaces)
 {
   LammpsSession s;
-  s.run(cells3d(data_file("icosahedron.data")));
+  s.run(polyhedra_commands(data_file("icosahedron.data")));
   EdgeState before = state_of(s);
   const int lo = 1, hi = before.partner[0];    // vertex 1's first edge
   ASSERT_GT(hi, lo);
@@ -204,7 +222,7 @@ TEST(Growth3d, SmoothingReachesTheFourEdgesOfTheTwoFaces)
 namespace {
 std::string jittered_cells()
 {
-  return cells3d(data_file("cells3d_deformed.data")) +
+  return polyhedra_commands(data_file("cells3d_deformed.data")) +
       "displace_atoms all random 0.04 0.04 0.04 4711 units box\n";
 }
 const char *GROW_JITTERED = "fix grow all mesophyll3d/grow runs yes box fixed delta_V 0.4\n";
@@ -382,7 +400,7 @@ class BadGrowth3d : public ErrorTest {};
 
 TEST_F(BadGrowth3d, ArgumentsAndSetUp)
 {
-  const std::string base = cells3d(data_file("icosahedron.data"));
+  const std::string base = polyhedra_commands(data_file("icosahedron.data"));
   const char *grow = "fix grow all mesophyll3d/grow runs yes box fixed ";
   expect_errors(
       base,
@@ -392,8 +410,21 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow lambda must be >= 0, got -1"},
        {std::string(grow) + "delta_V 0.1 c_L 2\n",
         "Fix mesophyll3d/grow c_L must be in [0, 1], got 2"},
+       // in 3d theta0 is an edge's dihedral angle (a turning angle is a 2d ring's)
        {std::string(grow) + "delta_V 0.1 theta0_min 4\n",
-        "Fix mesophyll3d/grow theta0_min must be a turning angle"},
+        "Fix mesophyll3d/grow theta0_min must be a dihedral angle in (-pi, pi] radians (the lower "
+        "bound of theta0 at void-facing edges"},
+       // 1e400 would be inf: LAMMPS's reader (utils::numeric) refuses it, naming the value
+       {std::string(grow) + "delta_V 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 lambda 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 c_L -1e400\n",
+        "Floating point number -1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 c_B 1e400\n",
+        "Floating point number 1e400 in input script or data file is out of range"},
+       {std::string(grow) + "delta_V 0.1 theta0_min -1e400\n",
+        "Floating point number -1e400 in input script or data file is out of range"},
        {std::string(grow) + "delta_V 0.1 box free\n",
         "Fix mesophyll3d/grow box must be 'relax' or 'fixed', got 'free'"},
        {std::string(grow) + "delta_V 0.1 speed 2\n", "Unknown fix mesophyll3d/grow keyword: speed"},

@@ -261,6 +261,24 @@ inline std::string contact_commands(const std::string &data, const Contacts &c =
       "thermo_modify norm no\n";
 }
 
+// Polyhedra of a data file of tools/make_cells3d.py with the 3d styles (edges, faces, hinges,
+// the hub with eps_v 1): no contacts, no stages.
+inline std::string polyhedra_commands(const std::string &data)
+{
+  return "units lj\ndimension 3\natom_style molecular\natom_modify map array\nboundary p p p\n"
+         "fix Vertices all property/atom d_sigma d_v0 ghost yes\n"
+         "fix Edges all property/atom i2_edge 6 ghost yes\n"
+         "fix EdgeLengths all property/atom d2_edge_l0 6 ghost yes\n"
+         "fix EdgeAngles all property/atom d2_edge_theta0 6 ghost yes\n"
+         "bond_style dpoly3d/edge\nangle_style zero\ndihedral_style dpoly3d/hinge\n"
+         "read_data " +
+      data +
+      " fix Vertices NULL Vertices fix Edges NULL Edges fix EdgeLengths NULL EdgeLengths fix "
+      "EdgeAngles NULL EdgeAngles\n"
+      "bond_coeff * 1.0\nangle_coeff *\ndihedral_coeff * 0.4\ncomm_modify cutoff 2.0\n"
+      "fix cells all dpoly3d/cells eps_v 1.0\nthermo_modify norm no\n";
+}
+
 // The 16-cell confluent tissue of examples/tissue at P0 under fix box/relax, minimized by
 // min_style fire/nph with the settings of examples/mesophyll/in.mesophyll; no stages.
 inline std::string tissue16_commands(const std::string &P0 = "1.0e-3")

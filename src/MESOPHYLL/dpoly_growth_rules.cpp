@@ -6,6 +6,7 @@
 #include "dpoly_growth_rules.h"
 
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "lammps.h"
 #include "math_const.h"
@@ -35,18 +36,22 @@ bool DPoly::GrowthRates::read(LAMMPS *lmp, const char *style, const char *key, c
     c_bending = at_least_zero();
   else if (strcmp(key, "theta0_min") == 0) {
     theta0_min = utils::numeric(FLERR, value, false, lmp);
-    // a lower bound for theta0 at void-facing places, which growth lowers toward it
+    // a lower bound for theta0 at void-facing places, which growth lowers toward it: a vertex's
+    // turning angle in 2d, an edge's dihedral angle (between the normals of its faces) in 3d
+    const bool polygons = lmp->domain->dimension == 2;
+    const char *angle = polygons ? "a turning angle" : "a dihedral angle";
+    const char *place = polygons ? "vertices" : "edges";
     if (!(theta0_min > -MathConst::MY_PI && theta0_min <= MathConst::MY_PI))
       error->all(FLERR,
-                 "Fix {} theta0_min must be a turning angle in (-pi, pi] radians (the lower "
-                 "bound of theta0 at void-facing vertices; the paper's is -pi/10), got {}",
-                 style, value);
+                 "Fix {} theta0_min must be {} in (-pi, pi] radians (the lower bound of theta0 "
+                 "at void-facing {}; the paper's is -pi/10), got {}",
+                 style, angle, place, value);
     if (theta0_min > 0.0 && lmp->comm->me == 0)
       error->warning(FLERR,
-                     "Fix {} theta0_min = {} > 0: every void-facing vertex whose theta0 is below "
+                     "Fix {} theta0_min = {} > 0: every void-facing {} whose theta0 is below "
                      "it is raised to it (made convex) instead of bounded; use a value <= 0 (the "
                      "paper's is -pi/10) unless that is meant",
-                     style, value);
+                     style, value, polygons ? "vertex" : "edge");
   } else if (strcmp(key, "scale_sigma") == 0)
     scale_diameters = utils::logical(FLERR, value, false, lmp);
   else if (strcmp(key, "box") == 0) {

@@ -15,6 +15,7 @@
 #include "dpoly_adhesion.h"
 #include "dpoly_image_check.h"
 #include "dpoly_laws.h"
+#include "dpoly_run_forces.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
@@ -105,6 +106,12 @@ FixDPoly3dCells::~FixDPoly3dCells()
   image_check->after_check();
 }
 
+// the store of the forces is a fix of its own, made once the hub is one
+void FixDPoly3dCells::post_constructor()
+{
+  run_forces = std::make_unique<DPoly::RunForces>(lmp, id);
+}
+
 int FixDPoly3dCells::setmask()
 {
   // PRE_EXCHANGE only for setup_pre_exchange(): pre_exchange() itself does nothing
@@ -157,7 +164,7 @@ std::vector<FixDPolyStage *> FixDPoly3dCells::find_stages()
 // those that act on polyhedra changes the surfaces
 void FixDPoly3dCells::post_run()
 {
-  FixDPolyStage::act_after_run(lmp, find_stages(), [](int) {});
+  FixDPolyStage::act_after_run(lmp, find_stages(), *run_forces, [](int) {});
 }
 
 double *FixDPoly3dCells::vertex_diameters()

@@ -24,6 +24,7 @@ FixStyle(dpoly3d/cells,FixDPoly3dCells);
 namespace LAMMPS_NS {
 namespace DPoly {
   class AdhesiveBondsImageCheck;
+  class RunForces;
 }    // namespace DPoly
 
 // Hub of the deformable-polyhedron model (3d cells): knows the cells (molecules whose faces,
@@ -38,6 +39,7 @@ class FixDPoly3dCells : public Fix, public DPoly::CellHub {
   FixDPoly3dCells(class LAMMPS *, int, char **);
   ~FixDPoly3dCells() override;
 
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup_pre_exchange() override;
@@ -89,6 +91,8 @@ class FixDPoly3dCells : public Fix, public DPoly::CellHub {
   std::vector<double> volume_forces;    // owned and ghost atoms, reverse-communicated
   // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
   std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
+  // the last step's forces, kept with their atoms through the stages
+  std::unique_ptr<DPoly::RunForces> run_forces;
 
   void refresh_cells();
   std::vector<class FixDPolyStage *> find_stages();

@@ -13,6 +13,7 @@
 #include "dpoly_adhesion.h"
 #include "dpoly_image_check.h"
 #include "dpoly_laws.h"
+#include "dpoly_run_forces.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
@@ -83,6 +84,12 @@ FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
   auto hubs = lmp->modify->get_fix_by_style("^dpoly/cells$");
   if (hubs.empty()) lmp->error->all(FLERR, "{} needs fix dpoly/cells, which keeps the cells", who);
   return dynamic_cast<FixDPolyCells *>(hubs.front());
+}
+
+// the store of the forces is a fix of its own, made once the hub is one
+void FixDPolyCells::post_constructor()
+{
+  run_forces = std::make_unique<DPoly::RunForces>(lmp, id);
 }
 
 int FixDPolyCells::setmask()
@@ -209,7 +216,7 @@ void FixDPolyCells::post_force(int vflag)
 
 void FixDPolyCells::post_run()
 {
-  FixDPolyStage::act_after_run(lmp, find_stages(), [&](int change) {
+  FixDPolyStage::act_after_run(lmp, find_stages(), *run_forces, [&](int change) {
     if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
     if (change & FixDPolyStage::RINGS) refresh_cells();
   });

@@ -24,6 +24,7 @@ FixStyle(dpoly/cells,FixDPolyCells);
 namespace LAMMPS_NS {
 namespace DPoly {
   class AdhesiveBondsImageCheck;
+  class RunForces;
 }    // namespace DPoly
 
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
@@ -37,6 +38,7 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   FixDPolyCells(class LAMMPS *, int, char **);
   ~FixDPolyCells() override;
 
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup_pre_exchange() override;
@@ -108,6 +110,8 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   int checked_atoms;
   // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
   std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
+  // the last step's forces, kept with their atoms through the stages
+  std::unique_ptr<DPoly::RunForces> run_forces;
   DPoly::VertexStateCache vertex_state;
 
   std::vector<class FixDPolyStage *> find_stages();

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "compute.h"
 #include "domain.h"
+#include "dpoly3d_surface_check.h"
 #include "dpoly_measure.h"
 #include "dpoly_overlap.h"
 #include "dpoly_ring.h"
@@ -91,7 +92,7 @@ int FixDPolyCheck::act()
   return NOTHING;
 }
 
-int FixDPolyCheck::check()
+void FixDPolyCheck::check()
 {
   minima++;
   Min *min = update->minimize;
@@ -115,27 +116,19 @@ int FixDPolyCheck::check()
   Compute *pe = modify->get_compute_by_id("thermo_pe");
   const double energy = pe ? pe->compute_scalar() : 0.0;
 
-  int inverted = 0;
-  tagint first_inverted = 0;
-  for (int c = 0; c < cells->ncells(); c++)
-    if (cells->area(c) <= 0.0) {
-      if (!inverted) first_inverted = cells->cell_id(c);
-      inverted++;
-    }
-  tagint first_tangled = 0;
-  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
-  const int tangled = tangled_cells(vertices, first_tangled);
-  const DPoly::Interpenetration overlapping = interpenetrating_cells(vertices);
-  const std::string geometry = geometry_problems(vertices);
+  // a state with non-finite coordinates has no geometry to test (and the tests would not end)
+  const std::string not_finite = non_finite_state();
+  Geometry geometry;
+  if (not_finite.empty()) geometry = cells ? polygon_geometry() : polyhedron_geometry();
 
   last[0] = converged ? 1.0 : 0.0;
   last[1] = force_norm;
   last[2] = pressure_error;
-  last[3] = inverted;
-  last[4] = tangled;
+  last[3] = geometry.inverted;
+  last[4] = geometry.tangled;
   last[5] = min->niter;
   last[6] = min->neval;
-  last[7] = overlapping.pairs;
+  last[7] = geometry.pairs;
 
   std::string problems;
   if (!std::isfinite(energy) || !std::isfinite(force_norm))
@@ -143,24 +136,13 @@ int FixDPolyCheck::check()
         fmt::format("; the energy pe = {} or the force norm {} is not finite", energy, force_norm);
   if (!std::isfinite(pressure_value))
     problems += fmt::format("; the pressure P = {} is not finite", pressure_value);
+  problems += not_finite;
   if (!converged)
     problems += fmt::format("; the minimizer stopped without converging ({})", min->stopstr);
   if (std::isfinite(pressure_error) && pressure_error > pressure_tolerance)
     problems +=
         fmt::format("; |P - P0|/P0 = {:.3g} exceeds {:.3g}", pressure_error, pressure_tolerance);
-  if (inverted)
-    problems += fmt::format("; {} cells have area <= 0 (first: cell {}, area {:.6g})", inverted,
-                            first_inverted, cells->area(cells->cell_index(first_inverted)));
-  if (tangled)
-    problems += fmt::format("; {} rings cross themselves (first: cell {})", tangled, first_tangled);
-  if (overlapping.pairs) {
-    const tagint *pair = overlapping.first;
-    problems +=
-        fmt::format("; {} pairs of cells interpenetrate (first: {})", overlapping.pairs,
-                    pair[0] == pair[1] ? fmt::format("cell {} and its periodic image", pair[0])
-                                       : fmt::format("cells {} and {}", pair[0], pair[1]));
-  }
-  problems += geometry;
+  problems += geometry.problems;
 
   // the log line carries the problems too: LAMMPS stops printing warnings after its limit
   if (comm->me == 0)
@@ -169,14 +151,117 @@ int FixDPolyCheck::check()
                    target_pressure != 0.0 ? fmt::format(", |P - P0|/P0 {:.3g}", pressure_error)
                                           : "",
                    problems.empty() ? "" : "; FAILED" + problems);
-  if (problems.empty()) return 0;
+  if (problems.empty()) return;
   const std::string message =
       fmt::format("Fix dpoly/check: minimum {} at step {}{}", minima, update->ntimestep, problems);
   if (stop_on_failure) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
-  return (!converged) + !(pressure_error <= pressure_tolerance) + (inverted > 0) + (tangled > 0) +
-      (overlapping.pairs > 0) + !(std::isfinite(energy) && std::isfinite(force_norm)) +
-      !std::isfinite(pressure_value) + !geometry.empty();
+}
+
+/* ----------------------------------------------------------------------
+   collective: vertices (of the group) at non-finite positions, a non-finite box; "" if none
+------------------------------------------------------------------------- */
+
+std::string FixDPolyCheck::non_finite_state()
+{
+  std::string problems;
+  const double box[6] = {domain->boxlo[0], domain->boxlo[1], domain->boxlo[2],
+                         domain->boxhi[0], domain->boxhi[1], domain->boxhi[2]};
+  bool box_finite = true;
+  for (double b : box) box_finite = box_finite && std::isfinite(b);
+  if (!box_finite)
+    problems += fmt::format("; the box is not finite: {} {} {} to {} {} {}", box[0], box[1], box[2],
+                            box[3], box[4], box[5]);
+  bigint count = 0, count_all = 0;
+  tagint first = MAXTAGINT, first_all = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (std::isfinite(atom->x[i][0]) && std::isfinite(atom->x[i][1]) &&
+        std::isfinite(atom->x[i][2]))
+      continue;
+    count++;
+    first = std::min(first, atom->tag[i]);
+  }
+  MPI_Allreduce(&count, &count_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (count_all)
+    problems += fmt::format("; {} vertices have non-finite positions (first: vertex {})", count_all,
+                            first_all);
+  return problems;
+}
+
+/* ----------------------------------------------------------------------
+   polygons: inverted cells, rings that cross themselves, interpenetrating cells, impossible
+   packing fractions and segments
+------------------------------------------------------------------------- */
+
+FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry()
+{
+  Geometry found;
+  tagint first_inverted = 0;
+  for (int c = 0; c < cells->ncells(); c++)
+    if (cells->area(c) <= 0.0) {
+      if (!found.inverted) first_inverted = cells->cell_id(c);
+      found.inverted++;
+    }
+  tagint first_tangled = 0;
+  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
+  found.tangled = tangled_cells(vertices, first_tangled);
+  const DPoly::Interpenetration overlapping = interpenetrating_cells(vertices);
+  found.pairs = overlapping.pairs;
+
+  if (found.inverted)
+    found.problems +=
+        fmt::format("; {} cells have area <= 0 (first: cell {}, area {:.6g})", found.inverted,
+                    first_inverted, cells->area(cells->cell_index(first_inverted)));
+  if (found.tangled)
+    found.problems +=
+        fmt::format("; {} rings cross themselves (first: cell {})", found.tangled, first_tangled);
+  if (overlapping.pairs) {
+    const tagint *pair = overlapping.first;
+    found.problems +=
+        fmt::format("; {} pairs of cells interpenetrate (first: {})", overlapping.pairs,
+                    pair[0] == pair[1] ? fmt::format("cell {} and its periodic image", pair[0])
+                                       : fmt::format("cells {} and {}", pair[0], pair[1]));
+  }
+  found.problems += geometry_problems(vertices);
+  return found;
+}
+
+/* ----------------------------------------------------------------------
+   polyhedra (dpoly3d_surface_check.h): cells with volume <= 0, with faces that point inward,
+   with a vertex inside another cell, and a packing fraction outside (0, 1]
+------------------------------------------------------------------------- */
+
+FixDPolyCheck::Geometry FixDPolyCheck::polyhedron_geometry()
+{
+  const DPoly3d::SurfaceProblems surfaces = DPoly3d::check_surfaces(lmp, *hub, groupbit);
+  Geometry found;
+  found.inverted = surfaces.collapsed;
+  found.tangled = surfaces.folded;
+  found.pairs = surfaces.pairs;
+  if (surfaces.collapsed)
+    found.problems +=
+        fmt::format("; {} cells have volume <= 0 or are flat (first: cell {}, volume {:.6g})",
+                    surfaces.collapsed, surfaces.first_collapsed, surfaces.first_volume);
+  if (surfaces.folded)
+    found.problems += fmt::format(
+        "; {} cells have faces that point into the cell (first: cell {}, face {} {} {})",
+        surfaces.folded, surfaces.first_folded, surfaces.first_face[0], surfaces.first_face[1],
+        surfaces.first_face[2]);
+  if (surfaces.pairs)
+    found.problems += fmt::format(
+        "; {} pairs of cells interpenetrate (first: cells {} and {}, vertex {} of cell {} inside "
+        "the other)",
+        surfaces.pairs, surfaces.first_pair[0], surfaces.first_pair[1], surfaces.first_vertex,
+        surfaces.first_vertex_cell);
+  // the box is the tissue's container only where it is periodic
+  if (domain->xperiodic && domain->yperiodic && domain->zperiodic) {
+    const double phi = surfaces.total_volume / (domain->xprd * domain->yprd * domain->zprd);
+    if (!(phi > 0.0 && phi <= 1.0))
+      found.problems += fmt::format("; the packing fraction phi is outside (0, 1]: {:.6g}", phi);
+  }
+  return found;
 }
 
 /* ----------------------------------------------------------------------
@@ -221,8 +306,8 @@ DPoly::Interpenetration FixDPolyCheck::interpenetrating_cells(const UnwrappedVer
   if (domain->triclinic) {
     if (!triclinic_warned && comm->me == 0)
       error->warning(FLERR,
-                     "Fix {} {}: interpenetrating cells are not looked for in a triclinic box", style,
-                     id);
+                     "Fix {} {}: interpenetrating cells are not looked for in a triclinic box",
+                     style, id);
     triclinic_warned = true;
     return {};
   }

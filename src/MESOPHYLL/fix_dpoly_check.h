@@ -20,15 +20,20 @@ FixStyle(dpoly/check,FixDPolyCheck);
 namespace LAMMPS_NS {
 
 // Checks every minimum the minimizer reports, so that no failure is carried on silently: why it
-// stopped, the final force norm, |P - P0|/P0, cells with area <= 0, rings that cross themselves,
-// cells that interpenetrate, packing fractions outside (0, 1] and ring segments not shorter than
-// half the box. Warns (default) or stops with an error that names what failed. The first stage
-// after a minimization: it sees the minimum before any other stage changes it.
+// stopped, the final force norm, |P - P0|/P0, non-finite energy, pressure, positions or box, and
+// geometry no tissue can have. Polygons (fix dpoly/cells): cells with area <= 0, rings that
+// cross themselves, cells that interpenetrate, packing fractions outside (0, 1] and ring
+// segments not shorter than half the box. Polyhedra (fix dpoly3d/cells,
+// dpoly3d_surface_check.h): cells with volume <= 0, faces turned into their cell, a vertex
+// inside another cell, a packing fraction outside (0, 1]. Warns (default) or stops with an
+// error that names what failed. The first stage after a minimization: it sees the minimum
+// before any other stage changes it.
 class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
   int act() override;
   double compute_vector(int) override;
+  bool acts_on_polyhedra() const override { return true; }
 
  private:
   double target_pressure;    // P0 (negative: a tension); 0: no pressure check
@@ -36,10 +41,21 @@ class FixDPolyCheck : public FixDPolyStage {
   int stop_on_failure;
   bigint minima;
   bool triclinic_warned = false;
-  // converged, force norm, |P - P0|/P0, inverted cells, tangled cells, iterations, force
-  // evaluations, pairs of interpenetrating cells (appended last: tools read the others by index)
+  // converged, force norm, |P - P0|/P0, inverted cells, tangled cells (3d: cells with faces
+  // turned inward), iterations, force evaluations, pairs of interpenetrating cells (appended
+  // last: tools read the others by index)
   double last[8];
-  int check();                // the number of problems found
+  // what the geometry tests found: vector elements 4, 5 and 8, and "; ..." for each problem
+  struct Geometry {
+    int inverted = 0;    // cells with area (volume) <= 0
+    int tangled = 0;     // rings that cross themselves (surfaces with faces turned inward)
+    int pairs = 0;       // pairs of cells that interpenetrate
+    std::string problems;
+  };
+  void check();
+  std::string non_finite_state();
+  Geometry polygon_geometry();
+  Geometry polyhedron_geometry();
   class UnwrappedVertices;    // every vertex on every rank, gathered once per check
   int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
   DPoly::Interpenetration interpenetrating_cells(const UnwrappedVertices &vertices);

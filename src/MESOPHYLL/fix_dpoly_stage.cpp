@@ -83,6 +83,7 @@ std::vector<FixDPolyStage *> FixDPolyStage::attach_all(LAMMPS *lmp, Fix *hub_fix
 }
 
 void FixDPolyStage::act_after_run(LAMMPS *lmp, const std::vector<FixDPolyStage *> &stages,
+                                  DPoly::RunForces &run_forces,
                                   const std::function<void(int change)> &after_change)
 {
   std::vector<FixDPolyStage *> acting;
@@ -95,6 +96,7 @@ void FixDPolyStage::act_after_run(LAMMPS *lmp, const std::vector<FixDPolyStage *
     if (auto *measure = dynamic_cast<DPoly::TissueMeasure *>(compute)) measures.push_back(measure);
   for (DPoly::TissueMeasure *measure : measures) measure->measure_minimum();
 
+  run_forces.keep();
   int changed = NOTHING;
   for (FixDPolyStage *stage : acting) {
     const int change = stage->act();
@@ -105,6 +107,7 @@ void FixDPolyStage::act_after_run(LAMMPS *lmp, const std::vector<FixDPolyStage *
     after_change(change);
     changed |= change;
   }
+  run_forces.put_back();
   if (changed == NOTHING) return;
   // Min::cleanup() reads the minimizer's vectors after this: they must cover the atoms as now
   if (lmp->update->whichflag == 2) lmp->update->minimize->reset_vectors();

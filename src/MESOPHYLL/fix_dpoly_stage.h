@@ -7,6 +7,7 @@
 #define LMP_FIX_DPOLY_STAGE_H
 
 #include "dpoly_cell_hub.h"
+#include "dpoly_run_forces.h"
 #include "fix.h"
 
 #include <functional>
@@ -62,8 +63,10 @@ class FixDPolyStage : public Fix {
   // ghost atoms rebuilt, one that changed per-vertex values its ghost atoms, before the next
   // stage reads them; then 'after_change' (the hub's own bookkeeping) sees its Change flags.
   // The package's computes take the minimum's values first and drop what the stages made stale
-  // (dpoly_measure.h); the minimizer's vectors are reset if anything changed.
+  // (dpoly_measure.h); the forces of the run's last step go with their atoms through the stages
+  // (dpoly_run_forces.h); the minimizer's vectors are reset if anything changed.
   static void act_after_run(class LAMMPS *lmp, const std::vector<FixDPolyStage *> &stages,
+                            DPoly::RunForces &run_forces,
                             const std::function<void(int change)> &after_change);
 
  protected:
