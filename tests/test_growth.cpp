@@ -278,6 +278,19 @@ TEST(Growth, StageRemovedBetweenRunsIsNotCalled)
   EXPECT_EQ(s.gather("d_a0", 1)[0], a0) << "no growth after the fix is gone";
 }
 
+// compute dpoly/tissue looks the hub up at every evaluation: after the hub was removed, 'run N
+// pre no' (which skips init()) gets an error naming it, not a read of the deleted fix (the
+// sanitized build reports a heap-use-after-free otherwise). The thermo output holds only the
+// compute: LAMMPS's own pe would read the deleted fix first.
+TEST(Growth, TissueComputeAfterHubRemovedNamesTheHub)
+{
+  LammpsSession s;
+  s.run(contact_commands(octagon_and_square()) +
+        "compute tissue all dpoly/tissue\nthermo_style custom step c_tissue[1]\nrun 0 post no\n");
+  EXPECT_THAT(s.try_run("unfix cells\nrun 1 pre no post no\n"),
+              HasSubstr("Compute dpoly/tissue needs fix dpoly/cells"));
+}
+
 // What a value printed after a run whose growth changed the tissue describes does not depend on
 // whether the thermo output evaluated the compute at the run's last step: compute dpoly/tissue
 // gives the tissue before growth acted (the minimum; phi_patch moves with sigma, which growth

@@ -322,3 +322,33 @@ TEST(Observables3d, BadInputGivesClearErrors)
     EXPECT_THAT(s.try_run(c.commands), HasSubstr(c.message)) << c.commands;
   }
 }
+
+// The computes look the hub up at every evaluation: 'run N pre no' skips init(), so after the
+// hub was removed (or replaced) they name the missing (or unmeasured) hub instead of reading
+// the deleted fix (a heap-use-after-free that the sanitized build reports). The thermo output
+// holds only the compute: LAMMPS's own pe would read the deleted fix first.
+TEST(Observables3d, HubRemovedBeforeRunPreNoIsNamed)
+{
+  struct Case {
+    std::string compute, keyword, removed, replaced;
+  };
+  const std::vector<Case> cases = {
+      {"compute t all dpoly3d/tissue\n", "c_t[1]", "Compute dpoly3d/tissue needs fix dpoly3d/cells",
+       "fix dpoly3d/cells has not measured the cells yet"},
+      {"compute s all dpoly3d/slice\n", "c_s[1]", "Compute dpoly3d/slice needs fix dpoly3d/cells",
+       "fix dpoly3d/cells has not checked the cells yet"},
+      {"compute a all dpoly/adhesion\n", "c_a[1][1]",
+       "Compute dpoly/adhesion needs fix dpoly/cells (polygons) or fix dpoly3d/cells", ""},
+  };
+  for (const auto &c : cases) {
+    for (const bool replace : {false, true}) {
+      if (replace && c.replaced.empty()) continue;
+      LammpsSession s;
+      s.run(read_cells(data_file("cube.data")) + HUB + c.compute + "thermo_style custom step " +
+            c.keyword + "\nrun 0 post no");
+      const std::string error =
+          s.try_run(std::string("unfix cells\n") + (replace ? HUB : "") + "run 1 pre no post no");
+      EXPECT_THAT(error, HasSubstr(replace ? c.replaced : c.removed)) << c.compute << replace;
+    }
+  }
+}

@@ -83,16 +83,23 @@ ComputeDPoly3dSlice::~ComputeDPoly3dSlice()
 
 void ComputeDPoly3dSlice::init()
 {
-  const auto hubs = modify->get_fix_by_style("^dpoly3d/cells$");
-  if (hubs.empty())
-    error->all(FLERR, "{} needs fix dpoly3d/cells: it knows the cells and checks their surfaces",
-               STYLE);
-  cells = dynamic_cast<FixDPoly3dCells *>(hubs.front());
+  find_cells();
   if (!domain->xperiodic || !domain->yperiodic || !domain->zperiodic)
     error->all(FLERR, "{} needs a box periodic in x, y and z", STYLE);
   if (domain->triclinic)
     error->all(FLERR, "{} needs an orthogonal box, not a triclinic one", STYLE);
   vertex_state.find(atom, error, STYLE);
+}
+
+// looked up at every evaluation, not only in init(): 'run N pre no' skips init(), and a hub
+// removed (or replaced) since would leave a dangling pointer
+void ComputeDPoly3dSlice::find_cells()
+{
+  const auto hubs = modify->get_fix_by_style("^dpoly3d/cells$");
+  if (hubs.empty())
+    error->all(FLERR, "{} needs fix dpoly3d/cells: it knows the cells and checks their surfaces",
+               STYLE);
+  cells = dynamic_cast<FixDPoly3dCells *>(hubs.front());
 }
 
 /* ----------------------------------------------------------------------
@@ -102,6 +109,7 @@ void ComputeDPoly3dSlice::init()
 
 ComputeDPoly3dSlice::Slices ComputeDPoly3dSlice::slice()
 {
+  find_cells();
   if (cells->ncells() == 0)
     error->all(FLERR,
                "{} {}: fix dpoly3d/cells has not checked the cells yet; evaluate it after a run "

@@ -53,6 +53,7 @@ class ComputeDPoly3dSlice : public Compute {
     double area;                      // of all outlines, holes negative
     int holes;
   };
+  void find_cells();
   Slices slice();
 };
 

@@ -47,6 +47,13 @@ ComputeDPoly3dTissue::~ComputeDPoly3dTissue()
 
 void ComputeDPoly3dTissue::init()
 {
+  find_cells();
+}
+
+// looked up at every evaluation, not only in init(): 'run N pre no' skips init(), and a hub
+// removed (or replaced) since would leave a dangling pointer
+void ComputeDPoly3dTissue::find_cells()
+{
   const auto hubs = modify->get_fix_by_style("^dpoly3d/cells$");
   if (hubs.empty())
     error->all(FLERR, "{} needs fix dpoly3d/cells: it measures the cells' volumes and surfaces",
@@ -62,6 +69,7 @@ double ComputeDPoly3dTissue::shape_parameter(double surface, double volume)
 // the hub knows its cells from the first force evaluation of a run on
 void ComputeDPoly3dTissue::require_measured_cells()
 {
+  find_cells();
   if (cells->ncells() == 0)
     error->all(FLERR,
                "{} {}: fix dpoly3d/cells has not measured the cells yet; evaluate it after a run "
@@ -113,7 +121,8 @@ void ComputeDPoly3dTissue::compute_array()
 
 int ComputeDPoly3dTissue::lock_length()
 {
-  return cells ? cells->ncells() : 0;
+  const auto hubs = modify->get_fix_by_style("^dpoly3d/cells$");
+  return hubs.empty() ? 0 : dynamic_cast<FixDPoly3dCells *>(hubs.front())->ncells();
 }
 
 double ComputeDPoly3dTissue::memory_usage()

@@ -39,6 +39,7 @@ class ComputeDPoly3dTissue : public Compute {
   double **per_cell;
   int rows;
 
+  void find_cells();
   void require_measured_cells();
 };
 

@@ -43,6 +43,9 @@ void ComputeDPolyAdhesion::init()
 void ComputeDPolyAdhesion::compute_array()
 {
   invoked_array = update->ntimestep;
+  // again, not only in init(): 'run N pre no' skips init(), and a hub removed (or replaced)
+  // since would leave a dangling pointer
+  cells = DPoly::CellHub::find(lmp, "Compute dpoly/adhesion");
   const int n = cells->ncells();
   const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   memory->destroy(per_cell);

@@ -176,6 +176,9 @@ std::vector<int> ComputeDPolyTissue::neighbour_counts()
 
 ComputeDPolyTissue::Measures ComputeDPolyTissue::measure()
 {
+  // the hub again, not only in init(): 'run N pre no' skips init(), and a hub removed (or
+  // replaced) since would leave a dangling pointer
+  cells = FixDPolyCells::find(lmp, "Compute dpoly/tissue");
   return {patch_areas(), void_fractions(), neighbour_counts()};
 }
 
