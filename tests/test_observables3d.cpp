@@ -56,7 +56,7 @@ double value(LammpsSession &s, const std::string &compute, int k)
   return s.equal_variable("c_" + compute + "[" + std::to_string(k) + "]");
 }
 
-enum { PHI = 1, SHAPE, NEIGHBOURS, BONDS_OR_SECTIONS, CELLS_OR_HOLES };
+enum { PHI = 1, SHAPE, NEIGHBOURS, BONDS_OR_SECTIONS, CELLS_OR_HOLES, PHI_PATCH };
 
 }    // namespace
 
@@ -75,14 +75,35 @@ TEST(Tissue3d, IcosahedronShapeParameterIsAnalytic)
   EXPECT_EQ(value(*s, "tissue", NEIGHBOURS), 0.0) << "no adhesion style: no bonded neighbours";
   EXPECT_EQ(value(*s, "tissue", BONDS_OR_SECTIONS), 0.0);
   EXPECT_EQ(value(*s, "tissue", CELLS_OR_HOLES), 1.0);
-  // the per-cell row: ID, V, S, S^3/(36 pi V^2), z, bonds
-  const std::vector<double> row = s->global_array("tissue", 1, 6);
+  // the per-cell row: ID, V, S, S^3/(36 pi V^2), z, bonds, patch volume
+  const std::vector<double> row = s->global_array("tissue", 1, 7);
   EXPECT_EQ(row[0], 1.0);
   EXPECT_NEAR(row[1], volume, 1.0e-13);
   EXPECT_NEAR(row[2], surface, 1.0e-13);
   EXPECT_NEAR(row[3], shape, 1.0e-13);
   EXPECT_EQ(row[4], 0.0);
   EXPECT_EQ(row[5], 0.0);
+  // patch volume: every vertex pushed out radially by sin(pi/3) sigma/2 (sigma = a here), which
+  // for a regular polyhedron about its centre is the same polyhedron scaled by 1 + push/R
+  const double scale = 1.0 + 0.5 * sin(PI / 3.0) * a;
+  EXPECT_NEAR(row[6], volume * scale * scale * scale, 1.0e-13);
+  EXPECT_NEAR(value(*s, "tissue", PHI_PATCH), row[6] / 64.0, 1.0e-15);
+}
+
+// The cube of side 2 (vertices sqrt 3 from its centre, sigma 0.4): pushed by sin(pi/3) 0.2 =
+// 0.1 sqrt 3, it is the cube of side 2.2; across the periodic boundary it is measured whole.
+TEST(Tissue3d, CubePatchVolumeIsAnalytic)
+{
+  const double patch = 2.2 * 2.2 * 2.2;
+  auto cube = measured("cube.data");
+  EXPECT_NEAR(value(*cube, "tissue", PHI_PATCH), patch / 1000.0, 1.0e-15);
+  EXPECT_NEAR(cube->global_array("tissue", 1, 7)[6], patch, 1.0e-12);
+  cube->run("displace_atoms all move 5.0 5.0 5.0 units box\nrun 0 post no");
+  const std::vector<int> image = cube->gather_int("image", 1);
+  ASSERT_NE(*std::max_element(image.begin(), image.end()),
+            *std::min_element(image.begin(), image.end()))
+      << "the cube should be split by the periodic boundaries";
+  EXPECT_NEAR(value(*cube, "tissue", PHI_PATCH), patch / 1000.0, 1.0e-15);
 }
 
 // A cube (S^3/(36 pi V^2) = 6/pi) and finer icospheres, which approach the sphere's 1 from above.
@@ -102,12 +123,18 @@ TEST(Tissue3d, CubeIsAnalyticAndFinerSpheresApproachOne)
 TEST(Tissue3d, PerCellRowsAndMeans)
 {
   auto s = measured("cells3d_deformed.data");
-  const std::vector<double> rows = s->global_array("tissue", 2, 6);
+  const std::vector<double> rows = s->global_array("tissue", 2, 7);
   EXPECT_EQ(rows[0], 1.0);
-  EXPECT_EQ(rows[6], 2.0);
-  EXPECT_NEAR(value(*s, "tissue", SHAPE), 0.5 * (rows[3] + rows[9]), 1.0e-14);
-  EXPECT_NEAR(rows[1] + rows[7], s->equal_variable("f_cells[2]"), 1.0e-12);
-  EXPECT_NEAR(value(*s, "tissue", PHI), (rows[1] + rows[7]) / s->equal_variable("vol"), 1.0e-15);
+  EXPECT_EQ(rows[7], 2.0);
+  EXPECT_NEAR(value(*s, "tissue", SHAPE), 0.5 * (rows[3] + rows[10]), 1.0e-14);
+  EXPECT_NEAR(rows[1] + rows[8], s->equal_variable("f_cells[2]"), 1.0e-12);
+  EXPECT_NEAR(value(*s, "tissue", PHI), (rows[1] + rows[8]) / s->equal_variable("vol"), 1.0e-15);
+  EXPECT_NEAR(value(*s, "tissue", PHI_PATCH), (rows[6] + rows[13]) / s->equal_variable("vol"),
+              1.0e-15);
+  // a deformed cell's patch is larger than the cell and smaller than every vertex pushed out by
+  // its whole diameter would make it
+  EXPECT_GT(rows[6], rows[1]);
+  EXPECT_GT(rows[13], rows[8]);
   EXPECT_EQ(value(*s, "tissue", CELLS_OR_HOLES), 2.0);
   // fix ave/time writes the rows too (it asks the compute how many there are)
   const std::string file = scratch("percell3d.txt");
@@ -125,7 +152,7 @@ TEST(Tissue3d, PerCellRowsAndMeans)
     }
   ASSERT_EQ(written.size(), 3u) << "a header row (step, rows) and one row per cell";
   EXPECT_EQ(written[0], 2.0);
-  EXPECT_NEAR(written[2], rows[7], 1.0e-5 * rows[7]);
+  EXPECT_NEAR(written[2], rows[8], 1.0e-5 * rows[8]);
 }
 
 // The cube of side 2 cut through its middle: a square of area 4 and perimeter 8, although its
@@ -270,6 +297,8 @@ TEST(Observables3d, ParallelMatchesSerial)
                 1.0e-13 * std::max(1.0, std::fabs(value(*serial, "tissue", k))))
         << "tissue " << k;
   }
+  // the patch volumes come from whole-system tables in ID order: exactly the same
+  EXPECT_EQ(value(*parallel, "tissue", PHI_PATCH), value(*serial, "tissue", PHI_PATCH));
   EXPECT_EQ(value(*parallel, "sections", 1), value(*serial, "sections", 1));
 }
 
@@ -287,6 +316,7 @@ TEST(Observables3d, NewtonBondOffGivesTheSameValues)
                 1.0e-13 * std::max(1.0, std::fabs(value(*on, "tissue", k))))
         << "tissue " << k;
   }
+  EXPECT_EQ(value(*on, "tissue", PHI_PATCH), value(*off, "tissue", PHI_PATCH));
 }
 
 TEST(Observables3d, BadInputGivesClearErrors)

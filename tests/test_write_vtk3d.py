@@ -3,7 +3,9 @@
 (tests/make_test_data_slices.py) load back with vtkXMLPolyDataReader with the right counts,
 positions and per-cell volume, surface and S^3/(36 pi V^2); a cube across every periodic
 boundary is drawn whole inside the box; the slice PNG is written and its outlines (VTK's cutter)
-are the cubes' 2 x 2 squares, at a periodic image of the plane too. Exit 77 (skip) only if a Debian package is missing."""
+are the cubes' 2 x 2 squares, at a periodic image of the plane too; the 3d rendering
+(--render-png) shows both cubes in their colours. Exit 77 (skip) only if a Debian package is
+missing."""
 import contextlib
 import io
 import math
@@ -131,6 +133,20 @@ class WriteVTK3d(unittest.TestCase):
             # frame 2's cubes, drawn at z in [-1, 1], meet the plane z = 9.5 at its image -0.5
             below = write_vtk.slice_outlines(frame, faces, 0.95)
             self.assertEqual(len(below), 0 if frame.timestep == 0 else 2)
+
+    def test_render_shows_every_cell(self):
+        import matplotlib.image
+        import matplotlib.pyplot as plt
+        png = os.path.join(self.dir, "cells.png")
+        with contextlib.redirect_stdout(io.StringIO()):
+            rc = write_vtk.main([self.dump, "--faces", self.data, "--out",
+                                 os.path.join(self.dir, "vtk", "run"), "--render-png", png])
+        self.assertEqual(rc, 0)
+        pixels = matplotlib.image.imread(png)[:, :, :3].reshape(-1, 3)
+        for mol in (1, 2):  # one colour per cell (tab20), unshaded faces
+            colour = np.array(plt.get_cmap("tab20")(mol % 20)[:3])
+            seen = np.sum(np.all(np.abs(pixels - colour) < 0.02, axis=1))
+            self.assertGreater(seen, 500, f"cube {mol} is not drawn in its colour")
 
     def test_missing_columns_are_named(self):
         bad = os.path.join(self.dir, "bad.dump")

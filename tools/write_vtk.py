@@ -27,7 +27,7 @@ Draw the vertex disks with ParaView's Glyph filter (2D glyph circle, scale by si
 the faces, counter-clockwise from outside):
 
     write_vtk.py cells3d.dump --faces cells3d.data [--out vtk/cells3d]
-                 [--slice-png slice.png] [--slice-offset 0.5]
+                 [--slice-png slice.png] [--slice-offset 0.5] [--render-png cells.png]
 
 writes <out>_cells3d_<k>.vtp per frame and <out>_cells3d.pvd: every face a triangle, each cell
 moved by whole box lengths so that its vertex mean is inside the box, with
@@ -36,7 +36,11 @@ moved by whole box lengths so that its vertex mean is inside the box, with
   field data: timestep, box_lo, box_length.
 --slice-png draws the last frame's cross-sections by the plane z = zlo + offset Lz (VTK's own
 cutter, on every periodic image of the plane), one colour per cell, over the box.
-Needs python3-vtk9 and python3-numpy (Debian); python3-matplotlib for --slice-png.
+--render-png draws the last frame's cells in 3d (their faces, one colour per cell, each cell
+whole with its vertex mean in the box, the box's edges) with matplotlib: VTK's own rendering
+needs an X server, which a headless machine lacks, while the .vtp files render in ParaView.
+Needs python3-vtk9 and python3-numpy (Debian); python3-matplotlib for --slice-png and
+--render-png.
 """
 import argparse
 import os
@@ -342,6 +346,40 @@ def slice_png(path, frame, outlines, offset):
     plt.close(fig)
 
 
+def render_png(path, frame, faces):
+    """The cells' faces in 3d, one colour per cell, from a fixed view, with the box's edges."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    rows = frame.face_rows(faces)
+    cell = frame.mol[rows[:, 1]]
+    colours = plt.get_cmap("tab20")
+    fig = plt.figure(figsize=(6, 6))
+    ax = fig.add_subplot(projection="3d")
+    faces3d = Poly3DCollection(frame.pos[rows], facecolors=[colours(m % 20) for m in cell],
+                               edgecolors=(0, 0, 0, 0.25), linewidths=0.2)
+    ax.add_collection3d(faces3d)
+    lo, hi = frame.lo, frame.lo + frame.length
+    for d in range(3):  # the twelve edges of the box
+        for u in (lo[(d + 1) % 3], hi[(d + 1) % 3]):
+            for v in (lo[(d + 2) % 3], hi[(d + 2) % 3]):
+                ends = np.zeros((2, 3))
+                ends[:, d] = (lo[d], hi[d])
+                ends[:, (d + 1) % 3] = u
+                ends[:, (d + 2) % 3] = v
+                ax.plot(*ends.T, color="black", linewidth=0.8)
+    reach = frame.pos.min(axis=0), frame.pos.max(axis=0)
+    for d, axis in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
+        axis(min(lo[d], reach[0][d]), max(hi[d], reach[1][d]))
+    ax.set_box_aspect(tuple(max(hi[d], reach[1][d]) - min(lo[d], reach[0][d]) for d in range(3)))
+    ax.view_init(elev=25, azim=-60)
+    ax.set_axis_off()
+    ax.set_title(f"step {frame.timestep}: {len(np.unique(frame.mol))} cells")
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+
+
 def main3d(a, p):
     faces = read_faces(a.faces)
     out = a.out or os.path.join("vtk", os.path.splitext(os.path.basename(a.dump))[0])
@@ -360,6 +398,9 @@ def main3d(a, p):
         outlines = slice_outlines(frame, faces, a.slice_offset)
         slice_png(a.slice_png, frame, outlines, a.slice_offset)
         print(f"wrote {a.slice_png}: {len(outlines)} cross-sections of step {frame.timestep}")
+    if a.render_png:
+        render_png(a.render_png, frame, faces)
+        print(f"wrote {a.render_png}: the cells of step {frame.timestep} in 3d")
     return 0
 
 
@@ -378,6 +419,8 @@ def main(argv=None):
                    help="3d cells: the data file whose Angles are the faces (dump: id mol xu yu zu)")
     p.add_argument("--slice-png", default=None,
                    help="3d cells: PNG of the last frame's cross-sections by a plane z = const")
+    p.add_argument("--render-png", default=None,
+                   help="3d cells: PNG of the last frame's cells drawn in 3d (matplotlib)")
     p.add_argument("--slice-offset", type=float, default=0.5,
                    help="3d cells: height of that plane above zlo, in box heights (default 0.5)")
     a = p.parse_args(argv)

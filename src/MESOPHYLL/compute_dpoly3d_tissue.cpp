@@ -5,8 +5,10 @@
 
 #include "compute_dpoly3d_tissue.h"
 
+#include "atom.h"
 #include "domain.h"
 #include "dpoly_adhesion.h"
+#include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly3d_cells.h"
 #include "math_const.h"
@@ -15,13 +17,24 @@
 #include "update.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 using namespace LAMMPS_NS;
 
 namespace {
 const char *STYLE = "Compute dpoly3d/tissue";
-enum { PHI, MEAN_SHAPE, MEAN_NEIGHBOURS, BONDS, CELLS, NVALUES };
-enum { ID, VOLUME, SURFACE, SHAPE, NEIGHBOURS, CELL_BONDS, NCOLUMNS };
+enum { PHI, MEAN_SHAPE, MEAN_NEIGHBOURS, BONDS, CELLS, PHI_PATCH, NVALUES };
+enum { ID, VOLUME, SURFACE, SHAPE, NEIGHBOURS, CELL_BONDS, PATCH_VOLUME, NCOLUMNS };
+
+struct PatchVertex {
+  tagint tag, cell;
+  double x[3];    // unwrapped: every cell whole
+  double diameter;
+};
+struct PatchFace {
+  tagint a, b, c;    // counter-clockwise seen from outside the cell
+};
 }    // namespace
 
 ComputeDPoly3dTissue::ComputeDPoly3dTissue(LAMMPS *lmp, int narg, char **arg) :
@@ -59,11 +72,97 @@ void ComputeDPoly3dTissue::find_cells()
     error->all(FLERR, "{} needs fix dpoly3d/cells: it measures the cells' volumes and surfaces",
                STYLE);
   cells = dynamic_cast<FixDPoly3dCells *>(hubs.front());
+  vertex_state.find(atom, error, STYLE);
 }
 
 double ComputeDPoly3dTissue::shape_parameter(double surface, double volume)
 {
   return surface * surface * surface / (36.0 * MathConst::MY_PI * volume * volume);
+}
+
+double ComputeDPoly3dTissue::patch_push()
+{
+  return 0.5 * sin(MathConst::MY_PI / 3.0);
+}
+
+/* ----------------------------------------------------------------------
+   collective: per cell, the volume of its surface with every vertex pushed out radially, from
+   the mean of the cell's vertices, by sin(pi/3) times its radius (the 2d phi_patch's rule one
+   dimension up: the cell's body reaches past the vertex centres by the vertex spheres); the
+   divergence theorem over the pushed faces. From whole-system tables in ID order, so the same
+   sums on any number of ranks.
+------------------------------------------------------------------------- */
+
+std::vector<double> ComputeDPoly3dTissue::patch_volumes()
+{
+  const DPoly3d::VertexState state = vertex_state.get(atom, error, STYLE);
+  std::vector<PatchVertex> mine;
+  std::vector<PatchFace> my_faces;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & cells->groupbit)) continue;
+    const tagint self = atom->tag[i];
+    PatchVertex v;
+    v.tag = self;
+    v.cell = atom->molecule[i];
+    domain->unmap(atom->x[i], atom->image[i], v.x);
+    v.diameter = state.diameter[i];
+    mine.push_back(v);
+    for (int m = 0; m < atom->num_angle[i]; m++)
+      if (atom->angle_atom2[i][m] == self)
+        my_faces.push_back({atom->angle_atom1[i][m], self, atom->angle_atom3[i][m]});
+  }
+  std::vector<PatchVertex> vertices = DPoly::gather_on_all_ranks(std::move(mine), world);
+  std::vector<PatchFace> faces = DPoly::gather_on_all_ranks(std::move(my_faces), world);
+  std::sort(vertices.begin(), vertices.end(), [](const PatchVertex &p, const PatchVertex &q) {
+    return p.tag < q.tag;
+  });
+  std::sort(faces.begin(), faces.end(), [](const PatchFace &p, const PatchFace &q) {
+    return std::array<tagint, 3>{p.b, p.a, p.c} < std::array<tagint, 3>{q.b, q.a, q.c};
+  });
+
+  const int n = cells->ncells();
+  std::vector<std::array<double, 4>> centre(n, {0.0, 0.0, 0.0, 0.0});    // sum x, y, z; count
+  for (const auto &v : vertices) {
+    const int c = cells->cell_index(v.cell);
+    if (c < 0) continue;
+    for (int k = 0; k < 3; k++) centre[c][k] += v.x[k];
+    centre[c][3] += 1.0;
+  }
+  std::vector<std::array<double, 3>> pushed(vertices.size());
+  for (size_t i = 0; i < vertices.size(); i++) {
+    const int c = cells->cell_index(vertices[i].cell);
+    double d[3] = {0.0, 0.0, 0.0}, r2 = 0.0;
+    if (c >= 0)
+      for (int k = 0; k < 3; k++) {
+        d[k] = vertices[i].x[k] - centre[c][k] / centre[c][3];
+        r2 += d[k] * d[k];
+      }
+    const double scale = r2 > 0.0 ? patch_push() * vertices[i].diameter / sqrt(r2) : 0.0;
+    for (int k = 0; k < 3; k++) pushed[i][k] = vertices[i].x[k] + scale * d[k];
+  }
+  auto row_of = [&](tagint tag) {
+    auto it =
+        std::lower_bound(vertices.begin(), vertices.end(), tag, [](const PatchVertex &p, tagint t) {
+          return p.tag < t;
+        });
+    if (it == vertices.end() || it->tag != tag)
+      error->all(FLERR, "{} {}: face vertex {} is not in the cells' group", STYLE, id, tag);
+    return (size_t) (it - vertices.begin());
+  };
+  std::vector<double> volume(n, 0.0);
+  for (const auto &f : faces) {
+    const auto &a = pushed[row_of(f.a)], &b = pushed[row_of(f.b)], &c = pushed[row_of(f.c)];
+    const int cell = cells->cell_index(vertices[row_of(f.b)].cell);
+    if (cell < 0) continue;
+    volume[cell] += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+                     a[2] * (b[0] * c[1] - b[1] * c[0])) /
+        6.0;
+  }
+  for (int c = 0; c < n; c++)
+    if (!std::isfinite(volume[c]))
+      error->all(FLERR, "{} {} at step {}: the patch volume of cell {} is not finite", STYLE, id,
+                 update->ntimestep, cells->cell_id(c));
+  return volume;
 }
 
 // the hub knows its cells from the first force evaluation of a run on
@@ -95,6 +194,10 @@ void ComputeDPoly3dTissue::compute_vector()
   values[MEAN_NEIGHBOURS] = neighbours / n;
   values[BONDS] = 0.5 * bond_ends;    // each bond joins two cells
   values[CELLS] = n;
+  const std::vector<double> patch = patch_volumes();
+  double patch_sum = 0.0;
+  for (int c = 0; c < n; c++) patch_sum += patch[c];
+  values[PHI_PATCH] = patch_sum / (domain->xprd * domain->yprd * domain->zprd);
   vector = values;
 }
 
@@ -104,6 +207,7 @@ void ComputeDPoly3dTissue::compute_array()
   require_measured_cells();
   const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   rows = cells->ncells();
+  const std::vector<double> patch = patch_volumes();
   memory->destroy(per_cell);
   memory->create(per_cell, std::max(rows, 1), NCOLUMNS, "dpoly3d/tissue:per_cell");
   for (int c = 0; c < rows; c++) {
@@ -114,6 +218,7 @@ void ComputeDPoly3dTissue::compute_array()
     per_cell[c][SHAPE] = shape_parameter(cells->surface_area(c), cells->volume(c));
     per_cell[c][NEIGHBOURS] = adhesion.cell_contacts(cell);
     per_cell[c][CELL_BONDS] = adhesion.cell_bonds(cell);
+    per_cell[c][PATCH_VOLUME] = patch[c];
   }
   size_array_rows = rows;
   array = per_cell;

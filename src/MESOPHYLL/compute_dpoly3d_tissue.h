@@ -13,11 +13,15 @@ ComputeStyle(dpoly3d/tissue,ComputeDPoly3dTissue);
 #define LMP_COMPUTE_DPOLY3D_TISSUE_H
 
 #include "compute.h"
+#include "dpoly3d_state.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
 // The 3d tissue (doc/Howto_polyhedra.rst, "Observables"): volume fraction, 3d shape parameter
-// S^3/(36 pi V^2), contact number from the adhesive bonds; globally and per cell. Volumes and
+// S^3/(36 pi V^2), contact number from the adhesive bonds, patch volume fraction (the cells
+// inflated by their vertex spheres, as the 2d phi_patch); globally and per cell. Volumes and
 // surface areas are the ones fix dpoly3d/cells measured at the last force evaluation.
 class ComputeDPoly3dTissue : public Compute {
  public:
@@ -32,15 +36,20 @@ class ComputeDPoly3dTissue : public Compute {
 
   // S^3 / (36 pi V^2): 1 for a sphere, larger for any other closed surface
   static double shape_parameter(double surface, double volume);
+  // how far a vertex is pushed out for the patch volume, in vertex diameters: sin(pi/3)/2, the
+  // 2d phi_patch's push
+  static double patch_push();
 
  private:
   class FixDPoly3dCells *cells;
   double *values;
   double **per_cell;
   int rows;
+  DPoly3d::VertexStateCache vertex_state;
 
   void find_cells();
   void require_measured_cells();
+  std::vector<double> patch_volumes();
 };
 
 }    // namespace LAMMPS_NS
