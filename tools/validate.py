@@ -455,6 +455,10 @@ def checks_lines(pkg, pubs, narrow):
                       f"{sum(len(r['growth_steps']) for r in pubs)} frames have interpenetrating "
                       f"cells (per seed: {', '.join(map(str, bad))} frames), from the frame after "
                       f"{' or '.join(map(str, first))} growth steps on.")
+    else:
+        lines[-1] += (" The CSVs of the published code have no interpenetrating_pairs column "
+                      "(made before run.py wrote it); validation/published/README.md (\"The runs "
+                      "here\") has the published frames checked since.")
     if narrow:
         lines += ["", f"Rows where the published seeds agree to {NARROW:.1%} of their mean or "
                   "better (the seeds share every state up to the first breaking pass, which "
