@@ -13,7 +13,9 @@ phi_patch (estimated here, patch_phi() below) is at or below --phi-stop, or when
 itself (phi < its phiMin 0.3). Then every frame goes back into a package data file
 (frames.write_data) and one lmp run measures them all with compute dpoly/tissue after `run 0`
 (in.measure next to this script): the CSV's phi_patch, calA, z, bonds and void_fraction are the
-package's numbers, not ours. --measure-only redoes that from DIR without running the driver.
+package's numbers, not ours, and so is interpenetrating_pairs: the pairs of cells whose outlines
+overlap, as fix dpoly/check counts them (its vector element 8). --measure-only redoes that from
+DIR without running the driver.
 
 The driver's arguments are the values of the `default` set of potentials/arabidopsis.mesophyll,
 mapped in ARGS below; README.md says why each is what it is.
@@ -39,7 +41,7 @@ THETA0_MIN = -0.3141592653589793
 ARGS = {"kb0": 0.4, "betaEff": 100, "ctch": 1.0, "da0": 0.5, "dl0": 5, "cL": 0.5, "cB": 4,
         "t0_min": THETA0_MIN / (-0.5 * math.pi), "P0": 1.0e-3}
 COLUMNS = ["growth_steps", "phi_patch", "calA", "z", "bonds", "vertices", "void_fraction",
-           "iterations", "wall_s"]
+           "iterations", "wall_s", "interpenetrating_pairs"]
 CONVERGED = re.compile(r"C O N V E R G E D!")
 FIREIT = re.compile(r"\*\* fireit\s*=\s*(\d+)")
 STEP_DONE = re.compile(r"^\s*\* k\s*=\s*(\d+)")
@@ -111,7 +113,8 @@ def run_driver(binary, inp, seed, work, phi_stop):
 
 
 def measure(lmp, work):
-    """Package values of every frame: write frame_K.data, run in.measure over them all once."""
+    """Package values of every frame: write frame_K.data, run in.measure over them all once.
+    Returns the tissues, measure.txt's rows and check.txt's pairs of interpenetrating cells."""
     tissues = list(frames.read_frames(os.path.join(work, "pos.txt")))
     listing = os.path.join(work, "frames.list")
     with open(listing, "w") as f:
@@ -126,7 +129,9 @@ def measure(lmp, work):
     with open(os.path.join(work, "measure.txt")) as f:
         for line in f:
             rows.append([float(w) for w in line.split() if w != "cells"])
-    return tissues, rows
+    with open(os.path.join(work, "check.txt")) as f:
+        pairs = [int(float(line.split()[1])) for line in f]
+    return tissues, rows, pairs
 
 
 def main():
@@ -147,7 +152,7 @@ def main():
         run_driver(os.path.abspath(a.binary), a.input, a.seed, work, a.phi_stop)
     with open(os.path.join(work, "steps.txt")) as f:
         steps = [[float(w) for w in line.split()] for line in f if not line.startswith("#")]
-    tissues, rows = measure(os.path.abspath(a.lmp), work)
+    tissues, rows, pairs = measure(os.path.abspath(a.lmp), work)
     n = min(len(steps), len(tissues), len(rows))
     worst = max(abs(patch_phi(t) - r[2]) for t, r in zip(tissues[:n], rows[:n]))
     print(f"{n} frames; largest |phi_patch here - package| = {worst:.2e}; "
@@ -158,11 +163,11 @@ def main():
     with open(a.out, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(COLUMNS)
-        for (k, its, wall), t, r in zip(steps, tissues, rows):
+        for (k, its, wall), t, r, ip in zip(steps, tissues, rows, pairs):
             nv = np.array([len(c.x) for c in t.cells])
             void = np.dot(r[6:], nv) / nv.sum()    # void-facing vertices of all vertices
             w.writerow([int(k), f"{r[2]:.6f}", f"{r[3]:.6f}", f"{r[4]:.4f}", int(r[5]),
-                        nv.sum(), f"{void:.6f}", int(its), f"{wall:.2f}"])
+                        nv.sum(), f"{void:.6f}", int(its), f"{wall:.2f}", ip])
     print(f"wrote {a.out}")
 
 
