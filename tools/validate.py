@@ -446,31 +446,28 @@ def checks_lines(pkg, pubs, narrow):
     apart = sum(1 for r in pkg for _, text in r["failures"] if "interpenetrate" in text)
     lines = [f"fix dpoly/check at the package's minima: {failed} of {minima} failed, {apart} of "
              "them with interpenetrating cells."]
-    if all("interpenetrating_pairs" in r for r in pubs):
-        bad = [int(np.count_nonzero(r["interpenetrating_pairs"])) for r in pubs]
+    checked = [r for r in pubs if "interpenetrating_pairs" in r]
+    if checked:
+        bad = [int(np.count_nonzero(r["interpenetrating_pairs"])) for r in checked]
         first = sorted({int(r["growth_steps"][np.nonzero(r["interpenetrating_pairs"])[0][0]])
-                        for r in pubs if np.count_nonzero(r["interpenetrating_pairs"])})
+                        for r in checked if np.count_nonzero(r["interpenetrating_pairs"])})
         lines[-1] += (f" The same check on the published code's frames (column "
-                      f"interpenetrating_pairs of its CSVs): {sum(bad)} of "
-                      f"{sum(len(r['growth_steps']) for r in pubs)} frames have interpenetrating "
-                      f"cells (per seed: {', '.join(map(str, bad))} frames), from the frame after "
-                      f"{' or '.join(map(str, first))} growth steps on.")
+                      f"interpenetrating_pairs, in {len(checked)} of {len(pubs)} CSVs): "
+                      f"{sum(bad)} of {sum(len(r['growth_steps']) for r in checked)} frames have "
+                      f"interpenetrating cells (per checked seed: {', '.join(map(str, bad))})" +
+                      (f", the first after {' or '.join(map(str, first))} growth steps." if first
+                       else "."))
     else:
         lines[-1] += (" The CSVs of the published code have no interpenetrating_pairs column "
                       "(made before run.py wrote it); validation/published/README.md (\"The runs "
                       "here\") has the published frames checked since.")
     if narrow:
         lines += ["", f"Rows where the published seeds agree to {NARROW:.1%} of their mean or "
-                  "better (the seeds share every state up to the first breaking pass, which "
-                  "follows the minimum after the first growth step: no random draw comes "
-                  "earlier), so that the package is inside only if it ends in the same states: " +
+                  "better, so that the package is inside only if it ends in (nearly) the same "
+                  "states: " +
                   "; ".join(f"{label} ({'inside' if inside == 'yes' else 'outside'})"
-                            for label, inside in narrow) + ". After 0 growth steps the "
-                  "published state is a relaxation at fixed box, the package's a minimum at P0. "
-                  "The other rows need the published minimum after the first growth step, which "
-                  "has cells 3 and 7 interpenetrating, a state that fix dpoly/check calls failed; "
-                  "the package reaches it with min_modify steer mass only, and then carries the "
-                  "interpenetration on (validation/published/README.md)."]
+                            for label, inside in narrow) + ". Why the published seeds agree "
+                  "there and what matching those rows would take: validation/published/README.md."]
     return lines
 
 
