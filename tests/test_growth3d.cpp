@@ -436,5 +436,9 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow grow is defined on group one, but fix dpoly3d/cells "
         "cells keeps the cells of group all"},
        {"unfix cells\n" + std::string(grow) + "delta_V 0.1\nrun 0 post no\n",
-        "Fix mesophyll3d/grow grows polyhedra: it needs fix dpoly3d/cells"}});
+        "Fix mesophyll3d/grow grows polyhedra: it needs fix dpoly3d/cells"},
+       // the hub's internal force store, unfixed by hand: a minimum with a stage stops, naming
+       // it (the hub kept a pointer to it and crashed)
+       {"unfix cells_RUN_FORCES\n" + std::string(grow) + "delta_V 0.1\nminimize 0 0 1 1\n",
+        "Internal fix cells_RUN_FORCES (the forces stages keep with their atoms) is gone"}});
 }
