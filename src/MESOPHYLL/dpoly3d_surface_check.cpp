@@ -29,6 +29,8 @@ using MathExtra::len3;
 namespace {
 // V / S^(3/2) at or below which a cell counts as collapsed (a sphere has 0.094)
 constexpr double COLLAPSED = 1.0e-10;
+// how far outside a face its point tested for being inside the cell lies, over sqrt(its area)
+constexpr double OFF_FACE = 1.0e-4;
 
 struct VertexRecord {
   tagint tag, molecule;
@@ -152,18 +154,29 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
       }
       found.collapsed++;
     }
-    // a face pointing inward; of several, the one with the lowest (middle, first, last) IDs
+    // A face pointing into its cell: the point just off its centre on its outer side is
+    // enclosed by the cell's own surface, winding number +1 where the surface folds back over
+    // itself, -1 where it is turned inside out (a sound cell has 0 there, lobed or dented too:
+    // the centroid's side of the face plane says nothing for cells that are not star-shaped).
+    // Of several, the one with the lowest (middle, first, last) IDs.
     const FaceRecord *inward = nullptr;
     for (size_t k = 0; k < cells[c].faces.size(); k++) {
       const double *x = &cells[c].triangles[9 * k];
-      double ab[3], ac[3], normal[3], out[3];
+      double ab[3], ac[3], normal[3];
       for (int d = 0; d < 3; d++) {
         ab[d] = x[3 + d] - x[d];
         ac[d] = x[6 + d] - x[d];
-        out[d] = (x[d] + x[3 + d] + x[6 + d]) / 3.0 - cells[c].centroid[d];
       }
       cross3(ab, ac, normal);
-      if (!(dot3(normal, out) < 0.0)) continue;
+      const double twice_area = len3(normal);
+      if (!(twice_area > 0.0)) continue;    // no direction: a flat cell is the volume test's
+      // off the face by a small fraction of its size: nearer than any other part of the surface
+      const double step = OFF_FACE * sqrt(0.5 * twice_area) / twice_area;
+      double p[3];
+      for (int d = 0; d < 3; d++) p[d] = (x[d] + x[3 + d] + x[6 + d]) / 3.0 + step * normal[d];
+      const double w =
+          winding_number(p, cells[c].triangles.data(), (int) cells[c].faces.size());
+      if (std::fabs(w) < 0.5) continue;
       const FaceRecord &f = cells[c].faces[k];
       if (!inward || std::tie(f.b, f.a, f.c) < std::tie(inward->b, inward->a, inward->c))
         inward = &f;
