@@ -9,6 +9,7 @@
 #include "domain.h"
 #include "dpoly_cell_hub.h"
 #include "dpoly_ring.h"
+#include "error.h"
 #include "lammps.h"
 #include "math_const.h"
 #include "math_extra.h"
@@ -108,13 +109,24 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
     const int c = cell_of(v.molecule);
     if (c >= 0) cells[c].vertices.push_back(&v);
   }
+  // every rank holds all records, so every rank stops here alike
+  auto corner_of = [&](const FaceRecord &f, tagint corner) {
+    const auto found = by_tag.find(corner);
+    if (found == by_tag.end())
+      lmp->error->all(FLERR,
+                      "Fix dpoly/check: face {} {} {} (an angle) has atom {} outside the fix's "
+                      "group: the group must hold whole cells",
+                      f.a, f.b, f.c, corner);
+    return found->second;
+  };
   for (const FaceRecord &f : faces) {
-    const int c = cell_of(by_tag.at(f.b)->molecule);
+    const int c = cell_of(corner_of(f, f.b)->molecule);
     if (c < 0) continue;
     cells[c].faces.push_back(f);
-    for (tagint corner : {f.a, f.b, f.c})
-      cells[c].triangles.insert(cells[c].triangles.end(), by_tag.at(corner)->x,
-                                by_tag.at(corner)->x + 3);
+    for (tagint corner : {f.a, f.b, f.c}) {
+      const VertexRecord *v = corner_of(f, corner);
+      cells[c].triangles.insert(cells[c].triangles.end(), v->x, v->x + 3);
+    }
   }
   for (Cell &cell : cells) {
     if (cell.vertices.empty()) continue;
@@ -131,13 +143,18 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
   // cells are in ID order, so the first one found has the lowest ID
   for (int c = 0; c < hub.ncells(); c++) {
     // V = (1/6) sum over faces of x_a . (x_b x x_c), as the hub measures it, here on the
-    // positions tested (a state made by hand after the last force evaluation too)
+    // positions tested (a state made by hand after the last force evaluation too), taken from
+    // the cell's centroid: from the origin, the round-off would grow with the cell's distance
+    // from it squared and could hide a flat cell far from the origin
     double volume = 0.0, area = 0.0;
     for (size_t k = 0; k < cells[c].faces.size(); k++) {
       const double *x = &cells[c].triangles[9 * k];
+      double r[3][3];
+      for (int m = 0; m < 3; m++)
+        for (int d = 0; d < 3; d++) r[m][d] = x[3 * m + d] - cells[c].centroid[d];
       double bc[3], ab[3], ac[3], normal[3];
-      cross3(x + 3, x + 6, bc);
-      volume += dot3(x, bc) / 6.0;
+      cross3(r[1], r[2], bc);
+      volume += dot3(r[0], bc) / 6.0;
       for (int d = 0; d < 3; d++) {
         ab[d] = x[3 + d] - x[d];
         ac[d] = x[6 + d] - x[d];
