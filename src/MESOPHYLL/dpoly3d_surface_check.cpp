@@ -209,21 +209,45 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
     }
   }
 
-  // a vertex inside another cell: tested against the nearest image of that cell's centroid
-  // (cells are shorter than half the box, as their edges are), and only within its reach
+  // a vertex inside another cell: tested against every image of that cell whose centroid is
+  // within the cell's reach of the vertex. Two such images are less than 2 reach apart, so
+  // from the nearest image the others lie at most 2 reach / width box lengths along each
+  // periodic direction (one more for minimum_image_big's approximation in triclinic boxes);
+  // a cell as long as half the box, as in a narrow periodic box, has several.
+  const double *h = domain->h;
+  double a_vec[3] = {h[0], 0.0, 0.0}, b_vec[3] = {h[5], h[1], 0.0}, c_vec[3] = {h[4], h[3], h[2]};
+  double bc[3], ca[3], ab[3];
+  cross3(b_vec, c_vec, bc);
+  cross3(c_vec, a_vec, ca);
+  cross3(a_vec, b_vec, ab);
+  const double box_volume = dot3(a_vec, bc);
+  // the distance between opposite faces of the box, along each lattice vector
+  const double width[3] = {box_volume / len3(bc), box_volume / len3(ca), box_volume / len3(ab)};
   std::map<std::pair<tagint, tagint>, std::pair<tagint, tagint>> inside;    // -> vertex, cell
   for (const Cell &host : cells) {
     if (host.faces.empty()) continue;
+    int shifts[3];
+    for (int k = 0; k < 3; k++)
+      shifts[k] = domain->periodicity[k] ? (int) (2.0 * host.reach / width[k]) + 1 : 0;
     for (const Cell &guest : cells) {
       if (&guest == &host) continue;
       for (const VertexRecord *v : guest.vertices) {
-        double d[3];
-        for (int k = 0; k < 3; k++) d[k] = v->x[k] - host.centroid[k];
-        domain->minimum_image_big(FLERR, d);
-        if (!(len3(d) < host.reach)) continue;
-        double p[3];
-        for (int k = 0; k < 3; k++) p[k] = host.centroid[k] + d[k];
-        if (!(winding_number(p, host.triangles.data(), (int) host.faces.size()) > 0.5)) continue;
+        double nearest[3];
+        for (int k = 0; k < 3; k++) nearest[k] = v->x[k] - host.centroid[k];
+        domain->minimum_image_big(FLERR, nearest);
+        bool enclosed = false;
+        for (int i = -shifts[0]; i <= shifts[0] && !enclosed; i++)
+          for (int j = -shifts[1]; j <= shifts[1] && !enclosed; j++)
+            for (int l = -shifts[2]; l <= shifts[2] && !enclosed; l++) {
+              double d[3];
+              for (int k = 0; k < 3; k++)
+                d[k] = nearest[k] + i * a_vec[k] + j * b_vec[k] + l * c_vec[k];
+              if (!(len3(d) < host.reach)) continue;
+              double p[3];
+              for (int k = 0; k < 3; k++) p[k] = host.centroid[k] + d[k];
+              enclosed = winding_number(p, host.triangles.data(), (int) host.faces.size()) > 0.5;
+            }
+        if (!enclosed) continue;
         const std::pair<tagint, tagint> pair(std::min(host.id, guest.id),
                                              std::max(host.id, guest.id));
         const auto known = inside.find(pair);
