@@ -327,6 +327,48 @@ TEST(Adhesion3d, JunctionEdgeRuleSparesTheInteriorBond)
   }
 }
 
+// The rule looks at both ends of a bond. Edge partner p of vertex 1 is bonded to a vertex q of
+// the second cell instead of its counterpart p + 12 (q: the nearest to p that is neither 13 nor
+// an edge partner of 13): every edge partner of 1 is still bonded, but p + 12, an edge partner of
+// 13, is not, so 1-13 is at the edge of the junction and breaks. Then the mirror image: p + 12
+// bonded to q - 12 instead of p, so that 1 has the unbonded partner and 13 has none.
+TEST(Adhesion3d, JunctionEdgeRuleLooksAtBothEnds)
+{
+  for (const bool mirrored : {false, true}) {
+    std::set<Bond> patch;
+    auto s = bonded_patch(patch);
+    const std::vector<int> columns = s->gather_int("i2_edge", 6);
+    const std::vector<double> x = s->gather("x", 3);
+    std::set<int> taken = {13};
+    for (int k = 0; k < 6; k++)
+      if (columns[k] > 0) taken.insert(columns[k] + 12);
+    const int p = columns[0];
+    int q = 0;
+    double nearest = 1.0e300;
+    for (int v = 13; v <= 24; v++) {
+      if (taken.count(v)) continue;
+      double r2 = 0.0;
+      for (int d = 0; d < 3; d++) r2 += pow(x[3 * (v - 1) + d] - x[3 * (p - 1) + d], 2);
+      if (r2 < nearest) {
+        nearest = r2;
+        q = v;
+      }
+    }
+    ASSERT_GT(q, 0);
+    ASSERT_LT(sqrt(nearest), 2.0) << "within the ghost cutoff";
+    const std::string moved = mirrored
+        ? std::to_string(p + 12) + " " + std::to_string(q - 12)
+        : std::to_string(p) + " " + std::to_string(q);
+    // the bond p - (p + 12) goes: its two atoms are the only ones of the group
+    s->run("group counterparts id " + std::to_string(p) + " " + std::to_string(p + 12) +
+           "\ndelete_bonds counterparts bond 2 remove special\n");
+    s->run("create_bonds single/bond 2 " + moved +
+           "\nfix break all mesophyll/break 3 beta 1.0e-12 runs yes edges yes\nrun 0 post no\n");
+    const std::set<Bond> left = adhesive_bonds(*s, "junction_after3d.data");
+    EXPECT_EQ(left.count({1, 13}), 0u) << (mirrored ? "1" : "13") << " has an unbonded partner";
+  }
+}
+
 // Stochastic breaking at the edges of junctions (a bonded vertex with an edge partner that has no
 // adhesive bond) draws from the seed and the atom IDs: the same bonds break on any number of
 // ranks, and some break without reaching the threshold.

@@ -119,16 +119,33 @@ TEST(Check3d, FlattenedIcosahedronIsReported)
   EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
 }
 
-// Vertex 1 pushed through the surface, past the centre: the volume stays positive, but the five
-// faces around vertex 1 now point into the cell (the one named is the face, an angle a b c, with
-// the lowest middle atom b).
-TEST(Check3d, VertexPushedThroughItsCellIsReported)
+// Vertex 1 pushed into the cell, past the centre: a dented cell, not star-shaped (the centroid is
+// on the outer side of the five faces around vertex 1), but sound: its surface does not cross
+// itself, so it passes.
+TEST(Check3d, DentedCellPasses)
 {
   LammpsSession s;
   s.run(checked("icosahedron.data", "action error"));
   std::vector<double> x = s.gather("x", 3);
   const std::vector<double> c = centroid(x, 1, 12);
   for (int d = 0; d < 3; d++) x[d] = c[d] - 0.3 * (x[d] - c[d]);
+  s.scatter("x", 3, x);
+  EXPECT_EQ(check_now(s), "");
+  EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
+  EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
+}
+
+// Vertex 1 pushed through the cell and out of the far side (to 2 circumradii beyond the centre):
+// the spike comes out through the faces at the far side, and just outside them lies the spike,
+// inside the cell (winding number -1): they are reported (the one named is the face, an angle
+// a b c, with the lowest middle atom b); the volume stays positive.
+TEST(Check3d, VertexPushedThroughItsCellIsReported)
+{
+  LammpsSession s;
+  s.run(checked("icosahedron.data", "action error"));
+  std::vector<double> x = s.gather("x", 3);
+  const std::vector<double> c = centroid(x, 1, 12);
+  for (int d = 0; d < 3; d++) x[d] = c[d] - 2.0 * (x[d] - c[d]);
   s.scatter("x", 3, x);
   const std::string error = check_now(s);
   EXPECT_THAT(error,

@@ -410,10 +410,11 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow lambda must be >= 0, got -1"},
        {std::string(grow) + "delta_V 0.1 c_L 2\n",
         "Fix mesophyll3d/grow c_L must be in [0, 1], got 2"},
-       // in 3d theta0 is an edge's dihedral angle (a turning angle is a 2d ring's)
+       // in 3d theta0 is an edge's bending angle (a turning angle is a 2d ring's)
        {std::string(grow) + "delta_V 0.1 theta0_min 4\n",
-        "Fix mesophyll3d/grow theta0_min must be a dihedral angle in (-pi, pi] radians (the lower "
-        "bound of theta0 at void-facing edges"},
+        "Fix mesophyll3d/grow theta0_min must be a bending angle between the faces' outward "
+        "normals (0 = flat) in (-pi, pi] radians (the lower bound of theta0 at void-facing "
+        "edges; the default is -pi/10), got 4"},
        // 1e400 would be inf: LAMMPS's reader (utils::numeric) refuses it, naming the value
        {std::string(grow) + "delta_V 1e400\n",
         "Floating point number 1e400 in input script or data file is out of range"},
@@ -436,5 +437,9 @@ TEST_F(BadGrowth3d, ArgumentsAndSetUp)
         "Fix mesophyll3d/grow grow is defined on group one, but fix dpoly3d/cells "
         "cells keeps the cells of group all"},
        {"unfix cells\n" + std::string(grow) + "delta_V 0.1\nrun 0 post no\n",
-        "Fix mesophyll3d/grow grows polyhedra: it needs fix dpoly3d/cells"}});
+        "Fix mesophyll3d/grow grows polyhedra: it needs fix dpoly3d/cells"},
+       // the hub's internal force store, unfixed by hand: a minimum with a stage stops, naming
+       // it (the hub kept a pointer to it and crashed)
+       {"unfix cells_RUN_FORCES\n" + std::string(grow) + "delta_V 0.1\nminimize 0 0 1 1\n",
+        "Internal fix cells_RUN_FORCES (the forces stages keep with their atoms) is gone"}});
 }

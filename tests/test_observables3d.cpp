@@ -327,7 +327,10 @@ TEST(Observables3d, BadInputGivesClearErrors)
   const std::vector<Case> cases = {
       {"compute t all dpoly3d/tissue 1\n", "Compute dpoly3d/tissue takes no arguments, got 1"},
       {"compute s all dpoly3d/slice planes 0\n",
-       "Compute dpoly3d/slice planes must be >= 1, got 0"},
+       "Compute dpoly3d/slice planes must be in [1, 1000000], got 0"},
+      // far too many planes: refused before anything is allocated for them
+      {"compute s all dpoly3d/slice planes 2000000000\n",
+       "Compute dpoly3d/slice planes must be in [1, 1000000], got 2000000000"},
       {"compute s all dpoly3d/slice planes 2.5\n", "Expected integer parameter instead of '2.5'"},
       {"compute s all dpoly3d/slice offset 1.0\n",
        "Compute dpoly3d/slice offset must be in [0, 1) (a fraction of the plane spacing), got 1.0"},

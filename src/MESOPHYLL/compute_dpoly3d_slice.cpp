@@ -40,6 +40,8 @@ struct VertexRecord {
 };
 }    // namespace
 
+constexpr int MAX_PLANES = 1000000;
+
 ComputeDPoly3dSlice::ComputeDPoly3dSlice(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), cells(nullptr), nplanes(1), offset(0.5), contact_factor(1.0),
     values(nullptr), per_section(nullptr), rows(0)
@@ -51,7 +53,11 @@ ComputeDPoly3dSlice::ComputeDPoly3dSlice(LAMMPS *lmp, int narg, char **arg) :
     const char *value = arg[iarg + 1];
     if (strcmp(arg[iarg], "planes") == 0) {
       nplanes = utils::inumeric(FLERR, value, false, lmp);
-      if (nplanes < 1) error->all(FLERR, "{} planes must be >= 1, got {}", STYLE, value);
+      // a fixed bound, not one from the box and the vertex size, which change during a run;
+      // 10^6 is far beyond use (200 planes give phi to about 1e-6) and keeps the per-plane
+      // arrays small (a count near 2^31 would ask for about 16 GB)
+      if (nplanes < 1 || nplanes > MAX_PLANES)
+        error->all(FLERR, "{} planes must be in [1, {}], got {}", STYLE, MAX_PLANES, value);
     } else if (strcmp(arg[iarg], "offset") == 0) {
       offset = utils::numeric(FLERR, value, false, lmp);
       if (!(offset >= 0.0 && offset < 1.0))

@@ -9,6 +9,7 @@
 #include "domain.h"
 #include "dpoly_cell_hub.h"
 #include "dpoly_ring.h"
+#include "error.h"
 #include "lammps.h"
 #include "math_const.h"
 #include "math_extra.h"
@@ -29,6 +30,8 @@ using MathExtra::len3;
 namespace {
 // V / S^(3/2) at or below which a cell counts as collapsed (a sphere has 0.094)
 constexpr double COLLAPSED = 1.0e-10;
+// how far outside a face its point tested for being inside the cell lies, over sqrt(its area)
+constexpr double OFF_FACE = 1.0e-4;
 
 struct VertexRecord {
   tagint tag, molecule;
@@ -106,13 +109,24 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
     const int c = cell_of(v.molecule);
     if (c >= 0) cells[c].vertices.push_back(&v);
   }
+  // every rank holds all records, so every rank stops here alike
+  auto corner_of = [&](const FaceRecord &f, tagint corner) {
+    const auto found = by_tag.find(corner);
+    if (found == by_tag.end())
+      lmp->error->all(FLERR,
+                      "Fix dpoly/check: face {} {} {} (an angle) has atom {} outside the fix's "
+                      "group: the group must hold whole cells",
+                      f.a, f.b, f.c, corner);
+    return found->second;
+  };
   for (const FaceRecord &f : faces) {
-    const int c = cell_of(by_tag.at(f.b)->molecule);
+    const int c = cell_of(corner_of(f, f.b)->molecule);
     if (c < 0) continue;
     cells[c].faces.push_back(f);
-    for (tagint corner : {f.a, f.b, f.c})
-      cells[c].triangles.insert(cells[c].triangles.end(), by_tag.at(corner)->x,
-                                by_tag.at(corner)->x + 3);
+    for (tagint corner : {f.a, f.b, f.c}) {
+      const VertexRecord *v = corner_of(f, corner);
+      cells[c].triangles.insert(cells[c].triangles.end(), v->x, v->x + 3);
+    }
   }
   for (Cell &cell : cells) {
     if (cell.vertices.empty()) continue;
@@ -129,13 +143,18 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
   // cells are in ID order, so the first one found has the lowest ID
   for (int c = 0; c < hub.ncells(); c++) {
     // V = (1/6) sum over faces of x_a . (x_b x x_c), as the hub measures it, here on the
-    // positions tested (a state made by hand after the last force evaluation too)
+    // positions tested (a state made by hand after the last force evaluation too), taken from
+    // the cell's centroid: from the origin, the round-off would grow with the cell's distance
+    // from it squared and could hide a flat cell far from the origin
     double volume = 0.0, area = 0.0;
     for (size_t k = 0; k < cells[c].faces.size(); k++) {
       const double *x = &cells[c].triangles[9 * k];
+      double r[3][3];
+      for (int m = 0; m < 3; m++)
+        for (int d = 0; d < 3; d++) r[m][d] = x[3 * m + d] - cells[c].centroid[d];
       double bc[3], ab[3], ac[3], normal[3];
-      cross3(x + 3, x + 6, bc);
-      volume += dot3(x, bc) / 6.0;
+      cross3(r[1], r[2], bc);
+      volume += dot3(r[0], bc) / 6.0;
       for (int d = 0; d < 3; d++) {
         ab[d] = x[3 + d] - x[d];
         ac[d] = x[6 + d] - x[d];
@@ -152,18 +171,29 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
       }
       found.collapsed++;
     }
-    // a face pointing inward; of several, the one with the lowest (middle, first, last) IDs
+    // A face pointing into its cell: the point just off its centre on its outer side is
+    // enclosed by the cell's own surface, winding number +1 where the surface folds back over
+    // itself, -1 where it is turned inside out (a sound cell has 0 there, lobed or dented too:
+    // the centroid's side of the face plane says nothing for cells that are not star-shaped).
+    // Of several, the one with the lowest (middle, first, last) IDs.
     const FaceRecord *inward = nullptr;
     for (size_t k = 0; k < cells[c].faces.size(); k++) {
       const double *x = &cells[c].triangles[9 * k];
-      double ab[3], ac[3], normal[3], out[3];
+      double ab[3], ac[3], normal[3];
       for (int d = 0; d < 3; d++) {
         ab[d] = x[3 + d] - x[d];
         ac[d] = x[6 + d] - x[d];
-        out[d] = (x[d] + x[3 + d] + x[6 + d]) / 3.0 - cells[c].centroid[d];
       }
       cross3(ab, ac, normal);
-      if (!(dot3(normal, out) < 0.0)) continue;
+      const double twice_area = len3(normal);
+      if (!(twice_area > 0.0)) continue;    // no direction: a flat cell is the volume test's
+      // off the face by a small fraction of its size: nearer than any other part of the surface
+      const double step = OFF_FACE * sqrt(0.5 * twice_area) / twice_area;
+      double p[3];
+      for (int d = 0; d < 3; d++) p[d] = (x[d] + x[3 + d] + x[6 + d]) / 3.0 + step * normal[d];
+      const double w =
+          winding_number(p, cells[c].triangles.data(), (int) cells[c].faces.size());
+      if (std::fabs(w) < 0.5) continue;
       const FaceRecord &f = cells[c].faces[k];
       if (!inward || std::tie(f.b, f.a, f.c) < std::tie(inward->b, inward->a, inward->c))
         inward = &f;
@@ -179,21 +209,45 @@ DPoly3d::SurfaceProblems DPoly3d::check_surfaces(LAMMPS *lmp, const DPoly::CellH
     }
   }
 
-  // a vertex inside another cell: tested against the nearest image of that cell's centroid
-  // (cells are shorter than half the box, as their edges are), and only within its reach
+  // a vertex inside another cell: tested against every image of that cell whose centroid is
+  // within the cell's reach of the vertex. Two such images are less than 2 reach apart, so
+  // from the nearest image the others lie at most 2 reach / width box lengths along each
+  // periodic direction (one more for minimum_image_big's approximation in triclinic boxes);
+  // a cell as long as half the box, as in a narrow periodic box, has several.
+  const double *h = domain->h;
+  double a_vec[3] = {h[0], 0.0, 0.0}, b_vec[3] = {h[5], h[1], 0.0}, c_vec[3] = {h[4], h[3], h[2]};
+  double bc[3], ca[3], ab[3];
+  cross3(b_vec, c_vec, bc);
+  cross3(c_vec, a_vec, ca);
+  cross3(a_vec, b_vec, ab);
+  const double box_volume = dot3(a_vec, bc);
+  // the distance between opposite faces of the box, along each lattice vector
+  const double width[3] = {box_volume / len3(bc), box_volume / len3(ca), box_volume / len3(ab)};
   std::map<std::pair<tagint, tagint>, std::pair<tagint, tagint>> inside;    // -> vertex, cell
   for (const Cell &host : cells) {
     if (host.faces.empty()) continue;
+    int shifts[3];
+    for (int k = 0; k < 3; k++)
+      shifts[k] = domain->periodicity[k] ? (int) (2.0 * host.reach / width[k]) + 1 : 0;
     for (const Cell &guest : cells) {
       if (&guest == &host) continue;
       for (const VertexRecord *v : guest.vertices) {
-        double d[3];
-        for (int k = 0; k < 3; k++) d[k] = v->x[k] - host.centroid[k];
-        domain->minimum_image_big(FLERR, d);
-        if (!(len3(d) < host.reach)) continue;
-        double p[3];
-        for (int k = 0; k < 3; k++) p[k] = host.centroid[k] + d[k];
-        if (!(winding_number(p, host.triangles.data(), (int) host.faces.size()) > 0.5)) continue;
+        double nearest[3];
+        for (int k = 0; k < 3; k++) nearest[k] = v->x[k] - host.centroid[k];
+        domain->minimum_image_big(FLERR, nearest);
+        bool enclosed = false;
+        for (int i = -shifts[0]; i <= shifts[0] && !enclosed; i++)
+          for (int j = -shifts[1]; j <= shifts[1] && !enclosed; j++)
+            for (int l = -shifts[2]; l <= shifts[2] && !enclosed; l++) {
+              double d[3];
+              for (int k = 0; k < 3; k++)
+                d[k] = nearest[k] + i * a_vec[k] + j * b_vec[k] + l * c_vec[k];
+              if (!(len3(d) < host.reach)) continue;
+              double p[3];
+              for (int k = 0; k < 3; k++) p[k] = host.centroid[k] + d[k];
+              enclosed = winding_number(p, host.triangles.data(), (int) host.faces.size()) > 0.5;
+            }
+        if (!enclosed) continue;
         const std::pair<tagint, tagint> pair(std::min(host.id, guest.id),
                                              std::max(host.id, guest.id));
         const auto known = inside.find(pair);

@@ -37,21 +37,25 @@ bool DPoly::GrowthRates::read(LAMMPS *lmp, const char *style, const char *key, c
   else if (strcmp(key, "theta0_min") == 0) {
     theta0_min = utils::numeric(FLERR, value, false, lmp);
     // a lower bound for theta0 at void-facing places, which growth lowers toward it: a vertex's
-    // turning angle in 2d, an edge's dihedral angle (between the normals of its faces) in 3d
+    // turning angle in 2d, in 3d an edge's bending angle, between its faces' outward normals
+    // (pi minus the dihedral angle; doc/dihedral_dpoly3d_hinge.rst)
     const bool polygons = lmp->domain->dimension == 2;
-    const char *angle = polygons ? "a turning angle" : "a dihedral angle";
+    const char *angle = polygons ? "a turning angle"
+                                 : "a bending angle between the faces' outward normals (0 = flat)";
     const char *place = polygons ? "vertices" : "edges";
+    // -pi/10 is the paper's value in 2d; in 3d it is this package's default
+    const char *source = polygons ? "the paper's" : "the default";
     if (!(theta0_min > -MathConst::MY_PI && theta0_min <= MathConst::MY_PI))
       error->all(FLERR,
                  "Fix {} theta0_min must be {} in (-pi, pi] radians (the lower bound of theta0 "
-                 "at void-facing {}; the paper's is -pi/10), got {}",
-                 style, angle, place, value);
+                 "at void-facing {}; {} is -pi/10), got {}",
+                 style, angle, place, source, value);
     if (theta0_min > 0.0 && lmp->comm->me == 0)
       error->warning(FLERR,
                      "Fix {} theta0_min = {} > 0: every void-facing {} whose theta0 is below "
-                     "it is raised to it (made convex) instead of bounded; use a value <= 0 (the "
-                     "paper's is -pi/10) unless that is meant",
-                     style, value, polygons ? "vertex" : "edge");
+                     "it is raised to it (made convex) instead of bounded; use a value <= 0 ({} "
+                     "is -pi/10) unless that is meant",
+                     style, value, polygons ? "vertex" : "edge", source);
   } else if (strcmp(key, "scale_sigma") == 0)
     scale_diameters = utils::logical(FLERR, value, false, lmp);
   else if (strcmp(key, "box") == 0) {

@@ -6,6 +6,7 @@
 #include "dpoly_run_forces.h"
 
 #include "atom.h"
+#include "error.h"
 #include "fix_store_atom.h"
 #include "modify.h"
 
@@ -15,13 +16,14 @@ using namespace LAMMPS_NS;
 using DPoly::RunForces;
 
 RunForces::RunForces(LAMMPS *lmp, const std::string &hub_id) :
-    Pointers(lmp), store_id(hub_id + "_RUN_FORCES"), store(nullptr), last_kept_tag(0)
+    Pointers(lmp), store_id(hub_id + "_RUN_FORCES"), last_kept_tag(0)
 {
-  store = dynamic_cast<FixStoreAtom *>(modify->add_fix(store_id + " all STORE/ATOM 3 0 0 0"));
-  store->disable = 1;    // idle: runs migrate their atoms without it
+  modify->add_fix(store_id + " all STORE/ATOM 3 0 0 0");
+  find_store()->disable = 1;    // idle: runs migrate their atoms without it
 }
 
-// Modify deletes every fix when LAMMPS ends, the hub first: then the store may be gone already
+// Modify deletes the fixes in order when LAMMPS ends, so the store (added after the hub) is
+// normally still there; it is not if the user unfixed it
 RunForces::~RunForces() noexcept(false)
 {
   if (modify && modify->nfix) {
@@ -30,8 +32,21 @@ RunForces::~RunForces() noexcept(false)
   }
 }
 
+// looked up each time, not kept: a user can unfix the store, and a kept pointer would dangle
+FixStoreAtom *RunForces::find_store()
+{
+  auto *store = dynamic_cast<FixStoreAtom *>(modify->get_fix_by_id(store_id));
+  if (!store)
+    error->all(FLERR,
+               "Internal fix {} (the forces stages keep with their atoms) is gone: it must not be "
+               "unfixed",
+               store_id);
+  return store;
+}
+
 void RunForces::keep()
 {
+  FixStoreAtom *store = find_store();
   double **f = atom->f, **kept = store->astore;
   tagint largest = 0;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -44,6 +59,7 @@ void RunForces::keep()
 
 void RunForces::put_back()
 {
+  FixStoreAtom *store = find_store();
   double **f = atom->f, **kept = store->astore;
   for (int i = 0; i < atom->nlocal; i++) {
     if (atom->tag[i] > last_kept_tag)

@@ -39,8 +39,8 @@ namespace DPoly {
     void put_back();
 
    private:
+    FixStoreAtom *find_store();    // the store, or error->all if it was unfixed
     std::string store_id;
-    FixStoreAtom *store;
     tagint last_kept_tag;    // the largest atom ID at keep(): larger ones were added since
   };
 
