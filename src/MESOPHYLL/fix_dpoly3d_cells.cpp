@@ -328,15 +328,22 @@ void FixDPoly3dCells::read_cells()
   volume_slopes.assign(ncells(), 0.0);
 }
 
-void FixDPoly3dCells::face_wings(int i, tagint a, tagint c, int &ja, int &jc)
+// every face is visited once, on the rank that owns its middle vertex b, with a and c at the
+// images nearest to b
+template <typename Visit> void FixDPoly3dCells::for_each_face(int i, Visit &&visit)
 {
-  ja = domain->closest_image(i, atom->map(a));
-  jc = domain->closest_image(i, atom->map(c));
-  if (ja < 0 || jc < 0)
-    error->one(FLERR,
-               "{}: vertex {} of the face {} {} {} is not on this rank: set comm_modify cutoff "
-               "above the longest edge",
-               STYLE, ja < 0 ? a : c, a, atom->tag[i], c);
+  for (int m = 0; m < atom->num_angle[i]; m++) {
+    if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
+    const tagint a = atom->angle_atom1[i][m], c = atom->angle_atom3[i][m];
+    const int ja = domain->closest_image(i, atom->map(a));
+    const int jc = domain->closest_image(i, atom->map(c));
+    if (ja < 0 || jc < 0)
+      error->one(FLERR,
+                 "{}: vertex {} of the face {} {} {} is not on this rank: set comm_modify cutoff "
+                 "above the longest edge",
+                 STYLE, ja < 0 ? a : c, a, atom->tag[i], c);
+    visit(ja, jc);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -352,15 +359,12 @@ void FixDPoly3dCells::check_nearest_images()
   tagint broken = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       for (int j : {ja, jc})
         for (int d = 0; d < 3; d++)
           if (fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) > tolerance)
             broken = std::max(broken, atom->tag[i]);
-    }
+    });
   }
   tagint broken_any = 0;
   MPI_Allreduce(&broken, &broken_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
@@ -413,10 +417,7 @@ void FixDPoly3dCells::measure_cells()
                  STYLE, atom->tag[i], atom->molecule[i]);
     double pb[3];
     domain->unmap(x[i], atom->image[i], pb);
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       double u[3], w[3], n[3];
       for (int d = 0; d < 3; d++) {
         u[d] = x[ja][d] - x[i][d];
@@ -425,7 +426,7 @@ void FixDPoly3dCells::measure_cells()
       cross3(w, u, n);    // x_a . (x_b x x_c) = x_b . ((x_c - x_b) x (x_a - x_b))
       local[2 * c] += dot3(pb, n) / 6.0;
       local[2 * c + 1] += 0.5 * sqrt(dot3(n, n));
-    }
+    });
   }
   MPI_Allreduce(local.data(), global.data(), 2 * ncells(), MPI_DOUBLE, MPI_SUM, world);
   for (int c = 0; c < ncells(); c++) {
@@ -459,10 +460,7 @@ void FixDPoly3dCells::apply_volume_forces(int vflag)
     const double scale = -volume_slopes[cell_index(atom->molecule[i])] / 6.0;
     double pb[3];
     domain->unmap(x[i], atom->image[i], pb);
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       double pa[3], pc[3], fa[3], fb[3], fc[3];
       for (int d = 0; d < 3; d++) {
         pa[d] = pb[d] + x[ja][d] - x[i][d];
@@ -476,7 +474,7 @@ void FixDPoly3dCells::apply_volume_forces(int vflag)
         volume_forces[3 * i + d] += scale * fb[d];
         volume_forces[3 * jc + d] += scale * fc[d];
       }
-    }
+    });
   }
   comm->reverse_comm(this);
 

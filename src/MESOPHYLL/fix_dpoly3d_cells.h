@@ -69,8 +69,9 @@ class FixDPoly3dCells : public FixDPolyHub {
   std::vector<double> volume_forces;    // owned and ghost atoms, reverse-communicated
 
   void apply_volume_forces(int vflag);
-  // local indices of the images of a face's wing atoms nearest to its owned middle atom i
-  void face_wings(int i, tagint a, tagint c, int &ja, int &jc);
+  // visit(ja, jc) for every face (angle a b c) centred on the owned atom i = b: the local
+  // indices of the images of a and c nearest to it (an error if one is not on this rank)
+  template <typename Visit> void for_each_face(int i, Visit &&visit);
 };
 
 }    // namespace LAMMPS_NS
