@@ -68,7 +68,7 @@ class FixDPolyHub : public Fix, public DPoly::CellHub {
   std::vector<tagint> cell_ids;     // sorted molecule IDs of the cells, set by read_cells()
   std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions
 
-  // Collective, at the end of read_cells(): the index of the molecule IDs in cell_ids.
+  // At the end of read_cells(): the index of the molecule IDs in cell_ids (for cell_index()).
   void index_cells();
   // The unwrapped positions of the owned atoms, and of every ghost as its owner has them: the
   // cells as their image flags make them, whichever images this rank holds.
@@ -76,9 +76,10 @@ class FixDPolyHub : public Fix, public DPoly::CellHub {
   // The error for an atom that an adhesive bond reaches but that is no vertex of the cells.
   [[noreturn]] void not_a_vertex(tagint atom) const;
 
-  // What a concrete hub does, in the order refresh_cells() calls them:
-  // init(): the dimension, atom style, styles and per-atom values it needs
+  // What a concrete hub does. From init(): the dimension, atom style, styles and per-atom
+  // values it needs.
   virtual void check_requirements() = 0;
+  // The rest in the order refresh_cells() calls them.
   // collective: gather and check the whole system's cells (every rank reaches the same verdict)
   // and set cell_ids, calling index_cells()
   virtual void read_cells() = 0;
