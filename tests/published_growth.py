@@ -18,16 +18,14 @@ U + P0 A to 1e-6 relative (measured: 2e-7, as close as the grown states are); wi
 (in.mesophyll's steering) in another one (measured: box area 2.2% larger), so that the test tells
 the steerings apart. Standard library only.
 """
-import argparse
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
-from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
+from regression import launch, parse_lmp_arguments, run_lmp, tissue_commands    # noqa: E402
 from lammps_data import DataFile    # noqa: E402
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "validation", "published", "growth_step"))
 from minimizer_settings import package_minimum, published_minimum    # noqa: E402
@@ -59,10 +57,8 @@ def largest_difference(args, rules, work):
     frame = os.path.join(frames, "published_frame_0.data")
     with open(os.path.join(work, "in.grow"), "w") as f:
         f.write(tissue_commands(frame) + GROW.format(rules=rules))
-    command, env = launch(args, ["-in", "in.grow", "-log", "none", "-echo", "none",
-                                 "-screen", "none"])
-    if subprocess.run(command, cwd=work, env=env).returncode != 0:
-        sys.exit(f"published_growth: lmp failed with rules {rules}")
+    run_lmp(args, ["-in", "in.grow", "-log", "none", "-echo", "none", "-screen", "none"], work,
+            f"published_growth: lmp failed with rules {rules}")
     grown = vertices(os.path.join(work, "grown.data"))
     published = vertices(os.path.join(frames, "published_frame_1.data"))
     if sorted(grown) != sorted(published):
@@ -91,12 +87,8 @@ def minimum_difference(args, steer, work):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--frames", required=True, help="folder of published_frame_{0,1}.data")
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__, lambda p: p.add_argument(
+        "--frames", required=True, help="folder of published_frame_{0,1}.data"))
     with tempfile.TemporaryDirectory() as work:
         published = largest_difference(args, "published", work)
         code = largest_difference(args, "code", work)

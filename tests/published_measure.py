@@ -11,27 +11,21 @@ and its check.txt the pairs of interpenetrating cells that fix dpoly/check finds
 and one in frame 1, cells 3 and 7 (whose outlines overlap there), as the CSV's
 interpenetrating_pairs column says when it has one. Standard library only.
 """
-import argparse
 import csv
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from regression import add_launcher_arguments, launch    # noqa: E402
+from regression import parse_lmp_arguments, run_lmp    # noqa: E402
 
 TOLERANCE = 1e-6
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--published", required=True, help="the folder validation/published")
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__, lambda p: p.add_argument(
+        "--published", required=True, help="the folder validation/published"))
     published = os.path.abspath(args.published)
     frames = [os.path.join(published, "growth_step", f"published_frame_{k}.data") for k in (0, 1)]
     with open(os.path.join(published, "N16_insert_seed20261122.csv")) as f:
@@ -39,11 +33,9 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         with open(os.path.join(work, "frames.list"), "w") as f:
             f.write("\n".join(frames) + "\n")
-        command, env = launch(args, ["-in", os.path.join(published, "in.measure"), "-var",
-                                     "list", "frames.list", "-log", "log.measure",
-                                     "-screen", "none"])
-        if subprocess.run(command, cwd=work, env=env).returncode != 0:
-            sys.exit("published_measure: lmp -in in.measure failed")
+        run_lmp(args, ["-in", os.path.join(published, "in.measure"), "-var", "list",
+                       "frames.list", "-log", "log.measure", "-screen", "none"], work,
+                "published_measure: lmp -in in.measure failed")
         with open(os.path.join(work, "measure.txt")) as f:
             measured = [line.split() for line in f]
         with open(os.path.join(work, "check.txt")) as f:

@@ -106,6 +106,26 @@ def add_launcher_arguments(parser):
                         help="flags after the program (MPIEXEC_POSTFLAGS)")
 
 
+def parse_lmp_arguments(doc, add_own):
+    """The command line of a script that runs lmp: --lmp (made absolute), the launcher options and
+    the script's own, which add_own(parser) adds; doc's first line describes the script."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--lmp", required=True)
+    add_own(parser)
+    add_launcher_arguments(parser)
+    args = parser.parse_args()
+    args.lmp = os.path.abspath(args.lmp)
+    return args
+
+
+def run_lmp(args, lmp_arguments, cwd, failure):
+    """lmp with lmp_arguments in the folder cwd, on args.np ranks; exits with 'failure' if it
+    fails."""
+    command, env = launch(args, lmp_arguments)
+    if subprocess.run(command, cwd=cwd, env=env).returncode != 0:
+        sys.exit(failure)
+
+
 def tissue_commands(data, after_read=""):
     """LAMMPS commands that read a tissue data file with the main example's styles and Table 1
     coefficients (segments, adhesion z bonds, bending 0.4, contacts) and the cells' hub; the

@@ -33,29 +33,43 @@ std::string checked(const std::string &data, const std::string &options = "")
       "\nmin_style fire\nminimize 0.0 1.0e-3 1000 10000\n";
 }
 
-// The check called on the state as it is now (moved by hand after the minimum), as after the
-// next minimization: "" if it passes, else its error ('action error').
-std::string check_now(LammpsSession &s)
-{
-  auto *lmp = static_cast<LAMMPS_NS::LAMMPS *>(s.lammps_handle());
-  auto *check = dynamic_cast<LAMMPS_NS::FixDPolyStage *>(lmp->modify->get_fix_by_id("check"));
-  if (!check) throw std::runtime_error("no fix check");
-  try {
-    check->act();
-  } catch (std::exception &e) {
-    return e.what();
-  }
-  return "";
-}
+// A checked minimum of the cells of a data file, whose positions a test then moves by hand.
+class Check3d : public ::testing::Test {
+ protected:
+  LammpsSession s;
+  std::vector<double> x;    // the positions at the minimum, in ID order, for a test to move
 
-// the mean of the positions of atoms first..last (IDs), from x gathered in ID order
-std::vector<double> centroid(const std::vector<double> &x, int first, int last)
-{
-  std::vector<double> c(3, 0.0);
-  for (int id = first; id <= last; id++)
-    for (int d = 0; d < 3; d++) c[d] += x[3 * (id - 1) + d] / (last - first + 1);
-  return c;
-}
+  void minimize(const std::string &data, const std::string &options = "action error")
+  {
+    s.run(checked(data, options));
+    x = s.gather("x", 3);
+  }
+
+  // the mean of the positions of atoms first..last (IDs) at the minimum
+  std::vector<double> centroid(int first, int last) const
+  {
+    std::vector<double> c(3, 0.0);
+    for (int id = first; id <= last; id++)
+      for (int d = 0; d < 3; d++) c[d] += x[3 * (id - 1) + d] / (last - first + 1);
+    return c;
+  }
+
+  // The check called on the moved positions, as after the next minimization: "" if it passes,
+  // else its error ('action error').
+  std::string check_moved()
+  {
+    s.scatter("x", 3, x);
+    auto *lmp = static_cast<LAMMPS_NS::LAMMPS *>(s.lammps_handle());
+    auto *check = dynamic_cast<LAMMPS_NS::FixDPolyStage *>(lmp->modify->get_fix_by_id("check"));
+    if (!check) throw std::runtime_error("no fix check");
+    try {
+      check->act();
+    } catch (std::exception &e) {
+      return e.what();
+    }
+    return "";
+  }
+};
 
 // A regular icosahedron of circumradius 1 (tools/make_cells3d.py): its volume.
 const double ICOSAHEDRON_VOLUME = 5.0 / 12.0 * (3.0 + sqrt(5.0)) * pow(1.0 / sin(0.4 * PI), 3);
@@ -71,10 +85,9 @@ std::string collapsed_cell(double volume)
 
 }    // namespace
 
-TEST(Check3d, SoundIcosahedronPasses)
+TEST_F(Check3d, SoundIcosahedronPasses)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
+  minimize("icosahedron.data");
   EXPECT_EQ(s.thermo("f_check[1]"), 1.0) << "converged (no iterations, zero tolerances)";
   EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
   EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
@@ -83,16 +96,13 @@ TEST(Check3d, SoundIcosahedronPasses)
 
 // Every vertex reflected through the centre: the same points, the opposite orientation, so the
 // volume is -V and every face points into the cell.
-TEST(Check3d, InvertedIcosahedronIsReported)
+TEST_F(Check3d, InvertedIcosahedronIsReported)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 12);
+  minimize("icosahedron.data");
+  const std::vector<double> c = centroid(1, 12);
   for (int i = 0; i < 12; i++)
     for (int d = 0; d < 3; d++) x[3 * i + d] = 2.0 * c[d] - x[3 * i + d];
-  s.scatter("x", 3, x);
-  const std::string error = check_now(s);
+  const std::string error = check_moved();
   EXPECT_THAT(error, HasSubstr(collapsed_cell(-ICOSAHEDRON_VOLUME)));
   EXPECT_THAT(error,
               HasSubstr("; 1 cells have faces that point into the cell (first: cell 1, "
@@ -104,15 +114,12 @@ TEST(Check3d, InvertedIcosahedronIsReported)
 
 // All vertices on the plane z = centre: volume 0 (collapsed), and no face points inward (their
 // normals lie in the plane), so only the volume test sees it.
-TEST(Check3d, FlattenedIcosahedronIsReported)
+TEST_F(Check3d, FlattenedIcosahedronIsReported)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 12);
+  minimize("icosahedron.data");
+  const std::vector<double> c = centroid(1, 12);
   for (int i = 0; i < 12; i++) x[3 * i + 2] = c[2];
-  s.scatter("x", 3, x);
-  const std::string error = check_now(s);
+  const std::string error = check_moved();
   EXPECT_THAT(error, HasSubstr("; 1 cells have volume <= 0 or are flat (first: cell 1, volume "));
   EXPECT_THAT(error, Not(HasSubstr("point into the cell")));
   EXPECT_EQ(s.thermo("f_check[4]"), 1.0);
@@ -122,15 +129,12 @@ TEST(Check3d, FlattenedIcosahedronIsReported)
 // Vertex 1 pushed into the cell, past the centre: a dented cell, not star-shaped (the centroid is
 // on the outer side of the five faces around vertex 1), but sound: its surface does not cross
 // itself, so it passes.
-TEST(Check3d, DentedCellPasses)
+TEST_F(Check3d, DentedCellPasses)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 12);
+  minimize("icosahedron.data");
+  const std::vector<double> c = centroid(1, 12);
   for (int d = 0; d < 3; d++) x[d] = c[d] - 0.3 * (x[d] - c[d]);
-  s.scatter("x", 3, x);
-  EXPECT_EQ(check_now(s), "");
+  EXPECT_EQ(check_moved(), "");
   EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
   EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
 }
@@ -139,15 +143,12 @@ TEST(Check3d, DentedCellPasses)
 // the spike comes out through the faces at the far side, and just outside them lies the spike,
 // inside the cell (winding number -1): they are reported (the one named is the face, an angle
 // a b c, with the lowest middle atom b); the volume stays positive.
-TEST(Check3d, VertexPushedThroughItsCellIsReported)
+TEST_F(Check3d, VertexPushedThroughItsCellIsReported)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 12);
+  minimize("icosahedron.data");
+  const std::vector<double> c = centroid(1, 12);
   for (int d = 0; d < 3; d++) x[d] = c[d] - 2.0 * (x[d] - c[d]);
-  s.scatter("x", 3, x);
-  const std::string error = check_now(s);
+  const std::string error = check_moved();
   EXPECT_THAT(error,
               HasSubstr("; 1 cells have faces that point into the cell (first: cell 1, "
                         "face "));
@@ -158,14 +159,11 @@ TEST(Check3d, VertexPushedThroughItsCellIsReported)
 
 // LAMMPS stops a run with non-finite coordinates itself; a state that has one anyway (set by
 // hand here) is named, and its geometry is not tested.
-TEST(Check3d, NonFinitePositionIsReported)
+TEST_F(Check3d, NonFinitePositionIsReported)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data", "action error"));
-  std::vector<double> x = s.gather("x", 3);
+  minimize("icosahedron.data");
   x[3 * 4 + 1] = std::numeric_limits<double>::quiet_NaN();    // vertex 5
-  s.scatter("x", 3, x);
-  EXPECT_THAT(check_now(s), HasSubstr("; 1 vertices have non-finite positions (first: vertex 5)"));
+  EXPECT_THAT(check_moved(), HasSubstr("; 1 vertices have non-finite positions (first: vertex 5)"));
   EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
 }
 
@@ -175,10 +173,9 @@ namespace {
 const char *TWO_CELLS = "cells3d_deformed.data";
 }    // namespace
 
-TEST(Check3d, SeparateCellsPass)
+TEST_F(Check3d, SeparateCellsPass)
 {
-  LammpsSession s;
-  s.run(checked(TWO_CELLS, "action error"));
+  minimize(TWO_CELLS);
   EXPECT_EQ(s.thermo("f_check[4]"), 0.0);
   EXPECT_EQ(s.thermo("f_check[5]"), 0.0);
   EXPECT_EQ(s.thermo("f_check[8]"), 0.0);
@@ -186,18 +183,15 @@ TEST(Check3d, SeparateCellsPass)
 
 // Vertex 50 of cell 2 moved to cell 1's centre, shifted by one box length in x (the check
 // takes the nearest image): one pair, named with the vertex.
-TEST(Check3d, VertexInsideAnotherCellIsReported)
+TEST_F(Check3d, VertexInsideAnotherCellIsReported)
 {
-  LammpsSession s;
-  s.run(checked(TWO_CELLS, "action error"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 42);
+  minimize(TWO_CELLS);
+  const std::vector<double> c = centroid(1, 42);
   const double lx = s.equal_variable("lx");
   x[3 * 49] = c[0] + lx;
   x[3 * 49 + 1] = c[1];
   x[3 * 49 + 2] = c[2];
-  s.scatter("x", 3, x);
-  const std::string error = check_now(s);
+  const std::string error = check_moved();
   EXPECT_THAT(error,
               HasSubstr("; 1 pairs of cells interpenetrate (first: cells 1 and 2, "
                         "vertex 50 of cell 2 inside the other)"))
@@ -206,22 +200,19 @@ TEST(Check3d, VertexInsideAnotherCellIsReported)
 }
 
 // The warning (default 'action warn') lets the run go on and still fills the vector.
-TEST(Check3d, WarnsByDefault)
+TEST_F(Check3d, WarnsByDefault)
 {
-  LammpsSession s;
-  s.run(checked("icosahedron.data"));
-  std::vector<double> x = s.gather("x", 3);
-  const std::vector<double> c = centroid(x, 1, 12);
+  minimize("icosahedron.data", "");
+  const std::vector<double> c = centroid(1, 12);
   for (int i = 0; i < 12; i++)
     for (int d = 0; d < 3; d++) x[3 * i + d] = 2.0 * c[d] - x[3 * i + d];
-  s.scatter("x", 3, x);
-  EXPECT_EQ(check_now(s), "");
+  EXPECT_EQ(check_moved(), "");
   EXPECT_EQ(s.thermo("f_check[4]"), 1.0);
 }
 
 // Solid angles of a closed, outward-oriented surface (a unit cube's 12 triangles) sum to 4 pi
 // inside and to 0 outside, also just outside a face and near a corner.
-TEST(Check3d, WindingNumberOfACube)
+TEST(Check3dGeometry, WindingNumberOfACube)
 {
   const double corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};

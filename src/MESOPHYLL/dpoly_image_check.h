@@ -16,7 +16,8 @@
 // below every type LAMMPS itself uses (it marks turned-off bonds by type <= 0, down to
 // -nbondtypes), which image_check() and box_too_small_check() skip. Ring segments (surface edges
 // in 3d) and every other bond stay in the check, so a cell with inconsistent image flags is still
-// reported. Both hubs, fix dpoly/cells and fix dpoly3d/cells, use it.
+// reported. Both hubs, fix dpoly/cells and fix dpoly3d/cells, use it through their common base
+// (fix_dpoly_hub.h).
 
 #ifndef LMP_DPOLY_IMAGE_CHECK_H
 #define LMP_DPOLY_IMAGE_CHECK_H

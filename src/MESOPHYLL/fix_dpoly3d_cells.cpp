@@ -12,17 +12,12 @@
 #include "comm.h"
 #include "dihedral.h"
 #include "domain.h"
-#include "dpoly_adhesion.h"
-#include "dpoly_image_check.h"
 #include "dpoly_laws.h"
-#include "dpoly_run_forces.h"
 #include "dpoly_ring.h"
 #include "error.h"
-#include "fix_dpoly_stage.h"
 #include "force.h"
 #include "group.h"
 #include "math_extra.h"
-#include "modify.h"
 #include "update.h"
 
 #include <algorithm>
@@ -69,9 +64,9 @@ std::vector<Edge> as_pairs(const std::vector<EdgeRecord> &records)
 }
 }    // namespace
 
+// scalar: the volume energy; vector: number of cells, total volume, total surface area
 FixDPoly3dCells::FixDPoly3dCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), volume_eps(1.0), volume_energy(0.0),
-    image_check(new DPoly::AdhesiveBondsImageCheck(lmp))
+    FixDPolyHub(lmp, narg, arg, "volume"), volume_eps(1.0), volume_energy(0.0)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -85,43 +80,11 @@ FixDPoly3dCells::FixDPoly3dCells(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Unknown fix dpoly3d/cells keyword: {}", arg[iarg]);
   }
 
-  scalar_flag = 1;    // volume energy
-  extscalar = 1;
-  vector_flag = 1;    // number of cells, total volume, total surface area
-  size_vector = 3;
-  extvector = 0;
-  global_freq = 1;
-  energy_global_flag = 1;
-  virial_global_flag = virial_peratom_flag = 1;
-  // the volume term is part of the potential: the minimizer and the pressure must see it
-  thermo_energy = thermo_virial = 1;
-  comm_forward = 3;
-  comm_reverse = 3;
-  dynamic_group_allow = 0;
+  comm_reverse = 3;    // volume forces on ghost atoms
 }
 
-// the adhesive bonds get their types back if an error left them hidden (dpoly_image_check.h)
-FixDPoly3dCells::~FixDPoly3dCells()
+void FixDPoly3dCells::check_requirements()
 {
-  image_check->after_check();
-}
-
-// the store of the forces is a fix of its own, made once the hub is one
-void FixDPoly3dCells::post_constructor()
-{
-  run_forces = std::make_unique<DPoly::RunForces>(lmp, id);
-}
-
-int FixDPoly3dCells::setmask()
-{
-  // PRE_EXCHANGE only for setup_pre_exchange(): pre_exchange() itself does nothing
-  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR |
-      PRE_EXCHANGE | MIN_PRE_EXCHANGE;
-}
-
-void FixDPoly3dCells::init()
-{
-  image_check->init();    // types hidden by a setup that an error cut short
   if (domain->dimension != 3)
     error->all(FLERR, "{} needs a 3d simulation (dimension 3); 2d cells use fix dpoly/cells",
                STYLE);
@@ -145,26 +108,6 @@ void FixDPoly3dCells::init()
   vertex_state.find(atom, error, STYLE);
   DPoly3d::EdgeValues edges;
   edges.find(atom, error, STYLE);
-  if (modify->get_fix_by_style("^dpoly3d/cells$").size() > 1)
-    error->all(FLERR, "Only one fix dpoly3d/cells may be defined");
-  if (!thermo_energy || !thermo_virial)
-    error->all(FLERR,
-               "{} {}: the volume term must count in both energy and virial; do not use "
-               "fix_modify energy no or virial no with it",
-               STYLE, id);
-  find_stages();
-}
-
-std::vector<FixDPolyStage *> FixDPoly3dCells::find_stages()
-{
-  return FixDPolyStage::attach_all(lmp, this, this, nullptr);
-}
-
-// after a minimization (or an MD run, for stages with 'runs yes'): the stages, in order; none of
-// those that act on polyhedra changes the surfaces
-void FixDPoly3dCells::post_run()
-{
-  FixDPolyStage::act_after_run(lmp, find_stages(), *run_forces, [](int) {});
 }
 
 double *FixDPoly3dCells::vertex_diameters()
@@ -175,62 +118,8 @@ double *FixDPoly3dCells::vertex_diameters()
 std::vector<tagint> FixDPoly3dCells::surface_neighbours(tagint atom) const
 {
   const auto found = edge_partners.find(atom);
-  if (found == edge_partners.end())
-    error->all(FLERR,
-               "{} {}: atom {} is not a vertex of its cells (group {}), but an adhesive bond "
-               "reaches it: bond only vertices of the hub's group",
-               STYLE, id, atom, group->names[igroup]);
+  if (found == edge_partners.end()) not_a_vertex(atom);
   return found->second;
-}
-
-// these two bracket LAMMPS's image-flag check at the setup of a run or minimization: the adhesive
-// bonds, whose network closes around the periodic box, are left out of it once it has been said
-// why (dpoly_image_check.h)
-void FixDPoly3dCells::setup_pre_exchange()
-{
-  image_check->before_check();
-}
-
-void FixDPoly3dCells::setup_pre_neighbor()
-{
-  image_check->after_check();
-  if (image_check->explained()) return;
-  share_unwrapped_positions();
-  image_check->explain_once(unwrapped);
-}
-
-// before the first force evaluation of a run, so that every style sees checked cells
-void FixDPoly3dCells::setup_pre_force(int /*vflag*/)
-{
-  refresh_cells();
-}
-
-void FixDPoly3dCells::setup(int vflag)
-{
-  post_force(vflag);
-}
-
-void FixDPoly3dCells::min_setup(int vflag)
-{
-  setup(vflag);
-}
-
-void FixDPoly3dCells::min_post_force(int vflag)
-{
-  post_force(vflag);
-}
-
-// at every reneighbouring, once atoms are wrapped and the ghosts are new: an edge that grew
-// past half the box would silently join the wrong image of a face's vertex
-void FixDPoly3dCells::pre_neighbor()
-{
-  share_unwrapped_positions();
-  check_whole_faces();
-}
-
-void FixDPoly3dCells::min_pre_neighbor()
-{
-  pre_neighbor();
 }
 
 void FixDPoly3dCells::post_force(int vflag)
@@ -239,29 +128,13 @@ void FixDPoly3dCells::post_force(int vflag)
   apply_volume_forces(vflag);
 }
 
-void FixDPoly3dCells::refresh_cells()
-{
-  check_surfaces();
-  share_unwrapped_positions();
-  check_whole_faces();
-  if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
-  measure_cells();
-  check_finite_terms();
-  for (int c = 0; c < ncells(); c++)
-    if (!(volumes[c] > 0.0))
-      error->all(FLERR,
-                 "{}: cell {} encloses the volume {:.8g} <= 0; its faces (angles a b c) must run "
-                 "counter-clockwise seen from outside the cell",
-                 STYLE, cell_ids[c], volumes[c]);
-}
-
 /* ----------------------------------------------------------------------
    collective: gather every vertex, face, edge bond, hinge and edge record; check that each cell
    is one closed, consistently oriented surface of sphere topology whose every edge has exactly
    one dpoly3d/edge bond, one hinge on its two faces and one set of preferred values
 ------------------------------------------------------------------------- */
 
-void FixDPoly3dCells::check_surfaces()
+void FixDPoly3dCells::read_cells()
 {
   const DPoly3d::VertexState state = vertex_state.get(atom, error, STYLE);
   DPoly3d::EdgeValues edge_values;
@@ -351,7 +224,6 @@ void FixDPoly3dCells::check_surfaces()
     members[v.molecule].push_back(&v);
   }
   cell_ids.clear();
-  cell_of_molecule.clear();
   vertex_counts.clear();
   preferred_volumes.clear();
   for (const auto &m : members) {
@@ -360,11 +232,11 @@ void FixDPoly3dCells::check_surfaces()
       if (v->preferred_volume != first->preferred_volume)
         error->all(FLERR, "{}: cell {} has different v0 on vertices {} ({}) and {} ({})", STYLE,
                    m.first, first->tag, first->preferred_volume, v->tag, v->preferred_volume);
-    cell_of_molecule[m.first] = (int) cell_ids.size();
     cell_ids.push_back(m.first);
     vertex_counts.push_back((int) m.second.size());
     preferred_volumes.push_back(first->preferred_volume);
   }
+  index_cells();
 
   // faces: each directed edge once, with its reverse in another face (closed and oriented)
   std::map<Edge, tagint> opposite;    // directed edge (u, v) of a face -> the face's third vertex
@@ -456,30 +328,22 @@ void FixDPoly3dCells::check_surfaces()
   volume_slopes.assign(ncells(), 0.0);
 }
 
-int FixDPoly3dCells::cell_index(tagint molecule) const
+// every face is visited once, on the rank that owns its middle vertex b, with a and c at the
+// images nearest to b
+template <typename Visit> void FixDPoly3dCells::for_each_face(int i, Visit &&visit)
 {
-  const auto found = cell_of_molecule.find(molecule);
-  return found == cell_of_molecule.end() ? -1 : found->second;
-}
-
-void FixDPoly3dCells::face_wings(int i, tagint a, tagint c, int &ja, int &jc)
-{
-  ja = domain->closest_image(i, atom->map(a));
-  jc = domain->closest_image(i, atom->map(c));
-  if (ja < 0 || jc < 0)
-    error->one(FLERR,
-               "{}: vertex {} of the face {} {} {} is not on this rank: set comm_modify cutoff "
-               "above the longest edge",
-               STYLE, ja < 0 ? a : c, a, atom->tag[i], c);
-}
-
-// the unwrapped positions of the owned atoms, and of every ghost as its owner has them
-void FixDPoly3dCells::share_unwrapped_positions()
-{
-  const int nlocal = atom->nlocal;
-  unwrapped.resize(3 * (size_t) (nlocal + atom->nghost));
-  for (int i = 0; i < nlocal; i++) domain->unmap(atom->x[i], atom->image[i], &unwrapped[3 * i]);
-  comm->forward_comm(this);
+  for (int m = 0; m < atom->num_angle[i]; m++) {
+    if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
+    const tagint a = atom->angle_atom1[i][m], c = atom->angle_atom3[i][m];
+    const int ja = domain->closest_image(i, atom->map(a));
+    const int jc = domain->closest_image(i, atom->map(c));
+    if (ja < 0 || jc < 0)
+      error->one(FLERR,
+                 "{}: vertex {} of the face {} {} {} is not on this rank: set comm_modify cutoff "
+                 "above the longest edge",
+                 STYLE, ja < 0 ? a : c, a, atom->tag[i], c);
+    visit(ja, jc);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -488,22 +352,19 @@ void FixDPoly3dCells::share_unwrapped_positions()
    images) describe different surfaces
 ------------------------------------------------------------------------- */
 
-void FixDPoly3dCells::check_whole_faces()
+void FixDPoly3dCells::check_nearest_images()
 {
   double **x = atom->x;
   const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd + domain->zprd);
   tagint broken = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       for (int j : {ja, jc})
         for (int d = 0; d < 3; d++)
           if (fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) > tolerance)
             broken = std::max(broken, atom->tag[i]);
-    }
+    });
   }
   tagint broken_any = 0;
   MPI_Allreduce(&broken, &broken_any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
@@ -516,10 +377,11 @@ void FixDPoly3dCells::check_whole_faces()
 }
 
 /* ----------------------------------------------------------------------
-   collective: a preferred volume far below the actual one makes (V/V0 - 1)^2 overflow
+   collective: a preferred volume far below the actual one makes (V/V0 - 1)^2 overflow; a cell
+   whose faces run clockwise from outside encloses a negative volume
 ------------------------------------------------------------------------- */
 
-void FixDPoly3dCells::check_finite_terms()
+void FixDPoly3dCells::check_measured_cells()
 {
   for (int c = 0; c < ncells(); c++)
     if (!std::isfinite(DPoly::area_law(volume_eps, volumes[c], preferred_volumes[c]).energy))
@@ -527,6 +389,12 @@ void FixDPoly3dCells::check_finite_terms()
                  "{}: cell {} has v0 = {} for a volume of {:.8g}: its volume term (V/V0 - 1)^2 "
                  "is not finite; give v0 a value of the order of the cell's volume",
                  STYLE, cell_ids[c], preferred_volumes[c], volumes[c]);
+  for (int c = 0; c < ncells(); c++)
+    if (!(volumes[c] > 0.0))
+      error->all(FLERR,
+                 "{}: cell {} encloses the volume {:.8g} <= 0; its faces (angles a b c) must run "
+                 "counter-clockwise seen from outside the cell",
+                 STYLE, cell_ids[c], volumes[c]);
 }
 
 /* ----------------------------------------------------------------------
@@ -549,10 +417,7 @@ void FixDPoly3dCells::measure_cells()
                  STYLE, atom->tag[i], atom->molecule[i]);
     double pb[3];
     domain->unmap(x[i], atom->image[i], pb);
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       double u[3], w[3], n[3];
       for (int d = 0; d < 3; d++) {
         u[d] = x[ja][d] - x[i][d];
@@ -561,7 +426,7 @@ void FixDPoly3dCells::measure_cells()
       cross3(w, u, n);    // x_a . (x_b x x_c) = x_b . ((x_c - x_b) x (x_a - x_b))
       local[2 * c] += dot3(pb, n) / 6.0;
       local[2 * c + 1] += 0.5 * sqrt(dot3(n, n));
-    }
+    });
   }
   MPI_Allreduce(local.data(), global.data(), 2 * ncells(), MPI_DOUBLE, MPI_SUM, world);
   for (int c = 0; c < ncells(); c++) {
@@ -595,10 +460,7 @@ void FixDPoly3dCells::apply_volume_forces(int vflag)
     const double scale = -volume_slopes[cell_index(atom->molecule[i])] / 6.0;
     double pb[3];
     domain->unmap(x[i], atom->image[i], pb);
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      int ja, jc;
-      face_wings(i, atom->angle_atom1[i][m], atom->angle_atom3[i][m], ja, jc);
+    for_each_face(i, [&](int ja, int jc) {
       double pa[3], pc[3], fa[3], fb[3], fc[3];
       for (int d = 0; d < 3; d++) {
         pa[d] = pb[d] + x[ja][d] - x[i][d];
@@ -612,7 +474,7 @@ void FixDPoly3dCells::apply_volume_forces(int vflag)
         volume_forces[3 * i + d] += scale * fb[d];
         volume_forces[3 * jc + d] += scale * fc[d];
       }
-    }
+    });
   }
   comm->reverse_comm(this);
 
@@ -640,22 +502,6 @@ double FixDPoly3dCells::compute_vector(int n)
   double total = 0.0;
   for (double value : (n == 1 ? volumes : surface_areas)) total += value;
   return total;
-}
-
-int FixDPoly3dCells::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
-                                       int * /*pbc*/)
-{
-  int m = 0;
-  for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) buf[m++] = unwrapped[3 * list[k] + d];
-  return m;
-}
-
-void FixDPoly3dCells::unpack_forward_comm(int n, int first, double *buf)
-{
-  int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) unwrapped[3 * i + d] = buf[m++];
 }
 
 int FixDPoly3dCells::pack_reverse_comm(int n, int first, double *buf)

@@ -10,10 +10,7 @@
 #include "bond.h"
 #include "comm.h"
 #include "domain.h"
-#include "dpoly_adhesion.h"
-#include "dpoly_image_check.h"
 #include "dpoly_laws.h"
-#include "dpoly_run_forces.h"
 #include "dpoly_ring.h"
 #include "error.h"
 #include "fix_dpoly_stage.h"
@@ -42,9 +39,9 @@ struct VertexRecord {
 };
 }    // namespace
 
+// scalar: the area energy; vector: number of cells, total cell area, cells with area <= 0
 FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), area_eps(1.0), area_energy(0.0), checked_atoms(-1),
-    image_check(new DPoly::AdhesiveBondsImageCheck(lmp))
+    FixDPolyHub(lmp, narg, arg, "area"), area_eps(1.0), area_energy(0.0), checked_atoms(-1)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -57,26 +54,6 @@ FixDPolyCells::FixDPolyCells(LAMMPS *lmp, int narg, char **arg) :
     } else
       error->all(FLERR, "Unknown fix dpoly/cells keyword: {}", arg[iarg]);
   }
-
-  scalar_flag = 1;    // area energy
-  extscalar = 1;
-  vector_flag = 1;    // number of cells, total cell area, cells with area <= 0
-  size_vector = 3;
-  extvector = 0;
-  global_freq = 1;
-  energy_global_flag = 1;
-  virial_global_flag = virial_peratom_flag = 1;
-  // The area term is part of the potential: the minimizer's objective and the pressure that
-  // fix box/relax drives must both see it, so both are on by default (init() insists).
-  thermo_energy = thermo_virial = 1;
-  comm_forward = 3;
-  dynamic_group_allow = 0;
-}
-
-// the adhesive bonds get their types back if an error left them hidden (dpoly_image_check.h)
-FixDPolyCells::~FixDPolyCells()
-{
-  image_check->after_check();
 }
 
 FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
@@ -86,22 +63,8 @@ FixDPolyCells *FixDPolyCells::find(LAMMPS *lmp, const std::string &who)
   return dynamic_cast<FixDPolyCells *>(hubs.front());
 }
 
-// the store of the forces is a fix of its own, made once the hub is one
-void FixDPolyCells::post_constructor()
+void FixDPolyCells::check_requirements()
 {
-  run_forces = std::make_unique<DPoly::RunForces>(lmp, id);
-}
-
-int FixDPolyCells::setmask()
-{
-  // PRE_EXCHANGE only for setup_pre_exchange(): pre_exchange() itself does nothing
-  return PRE_FORCE | MIN_PRE_FORCE | POST_FORCE | MIN_POST_FORCE | PRE_NEIGHBOR | MIN_PRE_NEIGHBOR |
-      PRE_EXCHANGE | MIN_PRE_EXCHANGE;
-}
-
-void FixDPolyCells::init()
-{
-  image_check->init();    // types hidden by a setup that an error cut short
   if (domain->dimension != 2)
     error->all(FLERR, "Fix dpoly/cells needs a 2d simulation (dimension 2), got dimension {}",
                domain->dimension);
@@ -114,19 +77,6 @@ void FixDPolyCells::init()
                "Fix dpoly/cells needs angles: each vertex is the centre of one angle "
                "(prev, vertex, next) that gives the ring order");
   vertex_state.find(atom, error, "Fix dpoly/cells");
-  if (modify->get_fix_by_style("^dpoly/cells$").size() > 1)
-    error->all(FLERR, "Only one fix dpoly/cells may be defined");
-  if (!thermo_energy || !thermo_virial)
-    error->all(FLERR,
-               "Fix dpoly/cells {}: the area term must count in both energy and virial; "
-               "do not use fix_modify energy no or virial no with it",
-               id);
-  find_stages();
-}
-
-std::vector<FixDPolyStage *> FixDPolyCells::find_stages()
-{
-  return FixDPolyStage::attach_all(lmp, this, this, this);
 }
 
 double *FixDPolyCells::vertex_diameters()
@@ -137,69 +87,8 @@ double *FixDPolyCells::vertex_diameters()
 std::vector<tagint> FixDPolyCells::surface_neighbours(tagint atom) const
 {
   const auto found = rings.find(atom);
-  if (found == rings.end())
-    error->all(FLERR,
-               "Fix dpoly/cells {}: atom {} is not a vertex of its cells (group {}), but an "
-               "adhesive bond reaches it: bond only vertices of the hub's group",
-               id, atom, group->names[igroup]);
+  if (found == rings.end()) not_a_vertex(atom);
   return {found->second.prev, found->second.next};
-}
-
-/* ----------------------------------------------------------------------
-   these two bracket LAMMPS's image-flag check at the setup of a run or minimization: the
-   adhesive bonds are left out of it once the reason for its warning has been given
-   (dpoly_image_check.h)
-------------------------------------------------------------------------- */
-
-void FixDPolyCells::setup_pre_exchange()
-{
-  image_check->before_check();
-}
-
-void FixDPolyCells::setup_pre_neighbor()
-{
-  image_check->after_check();
-  if (image_check->explained()) return;
-  share_unwrapped_positions();
-  image_check->explain_once(unwrapped);
-}
-
-// before the first force evaluation of a run, so that every style sees current cells
-void FixDPolyCells::setup_pre_force(int /*vflag*/)
-{
-  refresh_cells();
-}
-
-void FixDPolyCells::setup(int vflag)
-{
-  post_force(vflag);
-}
-
-void FixDPolyCells::min_setup(int vflag)
-{
-  setup(vflag);
-}
-
-void FixDPolyCells::min_post_force(int vflag)
-{
-  post_force(vflag);
-}
-
-/* ----------------------------------------------------------------------
-   at every reneighbouring, once atoms are wrapped and exchanged and the ghosts are new:
-   segments grow during a run, and one that outgrows half the box or the ghost cutoff would
-   silently join the wrong image of its next vertex (check_segments())
-------------------------------------------------------------------------- */
-
-void FixDPolyCells::pre_neighbor()
-{
-  share_unwrapped_positions();
-  check_segments();
-}
-
-void FixDPolyCells::min_pre_neighbor()
-{
-  pre_neighbor();
 }
 
 void FixDPolyCells::post_force(int vflag)
@@ -208,33 +97,17 @@ void FixDPolyCells::post_force(int vflag)
   apply_area_forces(vflag);
 }
 
-/* ----------------------------------------------------------------------
-   after a minimization (or an MD run, for stages with 'runs yes'): the stages in the protocol's
-   order (FixDPolyStage::act_after_run()); the rings are re-read after a stage that changed them
-   (refinement, which growth may follow)
-------------------------------------------------------------------------- */
-
-void FixDPolyCells::post_run()
+// after a stage: the rings are re-read after one that changed them (refinement, which growth
+// may follow)
+void FixDPolyCells::after_stage(int change)
 {
-  FixDPolyStage::act_after_run(lmp, find_stages(), *run_forces, [&](int change) {
-    if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
-    if (change & FixDPolyStage::RINGS) refresh_cells();
-  });
+  if (change != FixDPolyStage::NOTHING) checked_atoms = -1;    // the checked ghosts are gone
+  if (change & FixDPolyStage::RINGS) refresh_cells();
 }
 
-/* ----------------------------------------------------------------------
-   collective: gather every vertex's ring links and state, check that each cell is one closed
-   ring with valid values, index the cells, then check the image flags and orientation
-------------------------------------------------------------------------- */
-
-void FixDPolyCells::refresh_cells()
+// collective: a ring must run counter-clockwise, so that its area is positive
+void FixDPolyCells::check_measured_cells()
 {
-  gather_rings();
-  share_unwrapped_positions();
-  check_segments();
-  check_cell_extents();
-  if (DPoly::CellAdhesion *adhesion = DPoly::find_cell_adhesion(lmp)) adhesion->recount();
-  measure_cells();
   check_finite_terms();
   for (int c = 0; c < ncells(); c++)
     if (areas[c] <= 0.0)
@@ -281,7 +154,12 @@ void FixDPolyCells::check_finite_terms()
              worst_any, values_any[0], values_any[1]);
 }
 
-void FixDPolyCells::gather_rings()
+/* ----------------------------------------------------------------------
+   collective: gather every vertex's ring links and state, check that each cell is one closed
+   ring with valid values, index the cells
+------------------------------------------------------------------------- */
+
+void FixDPolyCells::read_cells()
 {
   const DPoly::VertexState state = DPoly::vertex_state(atom, error, "Fix dpoly/cells");
   // bond types of bond_style dpoly/segment (alone or in hybrid): its sub-style has their coeffs
@@ -456,36 +334,10 @@ void FixDPolyCells::gather_rings()
     }
   }
 
-  // molecule ID -> cell: a plain table when the IDs are dense, as they usually are
-  dense_index.clear();
-  sparse_index.clear();
-  if (cell_ids.back() <= 4 * (tagint) n + 1024) {
-    dense_index.assign(cell_ids.back() + 1, -1);
-    for (int c = 0; c < n; c++) dense_index[cell_ids[c]] = c;
-  } else {
-    for (int c = 0; c < n; c++) sparse_index[cell_ids[c]] = c;
-  }
+  index_cells();
   areas.assign(n, 0.0);
   perimeters.assign(n, 0.0);
   area_slopes.assign(n, 0.0);
-}
-
-int FixDPolyCells::cell_index(tagint molecule) const
-{
-  if (!dense_index.empty())
-    return (molecule >= 0 && molecule < (tagint) dense_index.size()) ? dense_index[molecule] : -1;
-  const auto found = sparse_index.find(molecule);
-  return found == sparse_index.end() ? -1 : found->second;
-}
-
-// the unwrapped positions of the owned atoms, and of every ghost as its owner has them: the
-// rings as their image flags make them, whichever images this rank holds
-void FixDPolyCells::share_unwrapped_positions()
-{
-  const int nlocal = atom->nlocal;
-  unwrapped.resize(3 * (size_t) (nlocal + atom->nghost));
-  for (int i = 0; i < nlocal; i++) domain->unmap(atom->x[i], atom->image[i], &unwrapped[3 * i]);
-  comm->forward_comm(this);
 }
 
 /* ----------------------------------------------------------------------
@@ -499,7 +351,7 @@ void FixDPolyCells::share_unwrapped_positions()
    measure_cells() notices against the images recorded here.
 ------------------------------------------------------------------------- */
 
-void FixDPolyCells::check_segments()
+void FixDPolyCells::check_nearest_images()
 {
   double **x = atom->x;
   const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd);
@@ -602,21 +454,6 @@ void FixDPolyCells::check_cell_extents()
     }
 }
 
-int FixDPolyCells::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
-{
-  int m = 0;
-  for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) buf[m++] = unwrapped[3 * list[k] + d];
-  return m;
-}
-
-void FixDPolyCells::unpack_forward_comm(int n, int first, double *buf)
-{
-  int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) unwrapped[3 * i + d] = buf[m++];
-}
-
 /* ----------------------------------------------------------------------
    collective: area (shoelace on unwrapped positions) and perimeter of every cell. A nearest
    image of a next vertex other than the one of the last ring check (the ghosts are the same
@@ -664,7 +501,7 @@ void FixDPolyCells::measure_cells()
   }
   if (global[moved] > 0.0) {
     share_unwrapped_positions();
-    check_segments();
+    check_nearest_images();
   }
 }
 

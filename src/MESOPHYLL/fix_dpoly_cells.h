@@ -12,60 +12,35 @@ FixStyle(dpoly/cells,FixDPolyCells);
 #ifndef LMP_FIX_DPOLY_CELLS_H
 #define LMP_FIX_DPOLY_CELLS_H
 
-#include "dpoly_cell_hub.h"
 #include "dpoly_ring.h"
-#include "fix.h"
+#include "fix_dpoly_hub.h"
 
-#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 namespace LAMMPS_NS {
-namespace DPoly {
-  class AdhesiveBondsImageCheck;
-  class RunForces;
-}    // namespace DPoly
 
 // Hub of the deformable-polygon model: knows the cells (molecules whose vertices form one
 // counter-clockwise ring), checks them, and adds the per-cell area term
 //   U_area = (eps_a/2) (a/a0 - 1)^2
 // to forces, energy and virial. After every minimization it runs the stage fixes (check, break,
-// refine before growth, grow, refine: see fix_dpoly_stage.h) in that order. Companion styles
-// find it with find(); the styles that also adhere polyhedra find it as a DPoly::CellHub.
-class FixDPolyCells : public Fix, public DPoly::CellHub {
+// refine before growth, grow, refine: see fix_dpoly_stage.h) in that order, and re-reads the
+// rings after a stage that changed them (the course of a run: fix_dpoly_hub.h). Companion
+// styles find it with find(); the styles that also adhere polyhedra find it as a DPoly::CellHub.
+class FixDPolyCells : public FixDPolyHub {
  public:
   FixDPolyCells(class LAMMPS *, int, char **);
-  ~FixDPolyCells() override;
 
-  void post_constructor() override;
-  int setmask() override;
-  void init() override;
-  void setup_pre_exchange() override;
-  void setup_pre_neighbor() override;
-  void setup_pre_force(int) override;
-  void setup(int) override;
-  void min_setup(int) override;
-  void pre_force(int) override {}
-  void min_pre_force(int) override {}
-  void pre_neighbor() override;
-  void min_pre_neighbor() override;
   void post_force(int) override;
-  void min_post_force(int) override;
-  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
   // The hub of this LAMMPS instance, for the companion styles; an error names 'who' if none.
   static FixDPolyCells *find(class LAMMPS *lmp, const std::string &who);
 
   // Per-cell values, identical on every rank, current after the last force evaluation.
-  int ncells() const override { return (int) cell_ids.size(); }
-  tagint cell_id(int cell) const override { return cell_ids[cell]; }
-  int cell_index(tagint molecule) const;    // -1 if the molecule is not a cell
   double area(int cell) const { return areas[cell]; }
   double perimeter(int cell) const { return perimeters[cell]; }
   double preferred_area(int cell) const { return preferred_areas[cell]; }
@@ -85,18 +60,20 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   std::vector<tagint> surface_neighbours(tagint atom) const override;
   int cell_dimension() const override { return 2; }
 
-  // Re-read cells, ring order and preferred areas, and have the cell-adhesion bond style
-  // recount its bonds (collective). Runs by itself at the start of every run and minimize, and
-  // after a stage changed the rings.
-  void refresh_cells();
+ protected:
+  void check_requirements() override;
+  void read_cells() override;    // cells, ring order and preferred areas
+  void check_nearest_images() override;
+  void check_cell_extents() override;
+  void measure_cells() override;
+  void check_measured_cells() override;
+  void after_stage(int change) override;
+  FixDPolyCells *polygons() override { return this; }
 
  private:
   double area_eps;    // eps_a
   double area_energy;
 
-  std::vector<tagint> cell_ids;                    // sorted molecule IDs of the cells
-  std::vector<int> dense_index;                    // molecule ID -> cell, when IDs are dense
-  std::unordered_map<tagint, int> sparse_index;    // otherwise
   std::unordered_map<tagint, RingNeighbours> rings;
   std::vector<std::vector<tagint>> ring_order;
   std::vector<int> vertex_counts;
@@ -104,23 +81,12 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
 
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
-  std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions, for ring checks
   // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
   std::vector<int> checked_next;
   int checked_atoms;
-  // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
-  std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
-  // the last step's forces, kept with their atoms through the stages
-  std::unique_ptr<DPoly::RunForces> run_forces;
   DPoly::VertexStateCache vertex_state;
 
-  std::vector<class FixDPolyStage *> find_stages();
-  void gather_rings();
-  void share_unwrapped_positions();
-  void check_segments();
-  void check_cell_extents();
   void check_finite_terms();
-  void measure_cells();
   void apply_area_forces(int vflag);
 };
 
