@@ -56,7 +56,7 @@ double value(LammpsSession &s, const std::string &compute, int k)
   return s.equal_variable("c_" + compute + "[" + std::to_string(k) + "]");
 }
 
-enum { PHI = 1, SHAPE, NEIGHBOURS, BONDS_OR_SECTIONS, CELLS_OR_HOLES, PHI_PATCH };
+enum { PHI = 1, SHAPE, NEIGHBOURS, BONDS_OR_SECTIONS, CELLS_OR_HOLES, PHI_PATCH, FLATTEST_FACE };
 
 }    // namespace
 
@@ -104,6 +104,46 @@ TEST(Tissue3d, CubePatchVolumeIsAnalytic)
             *std::min_element(image.begin(), image.end()))
       << "the cube should be split by the periodic boundaries";
   EXPECT_NEAR(value(*cube, "tissue", PHI_PATCH), patch / 1000.0, 1.0e-15);
+}
+
+// The flattest face, height over longest edge: sqrt(3)/2 for the icosahedron's equilateral
+// faces, 1/2 for the cube's right isosceles ones; a vertex of the icosahedron moved towards the
+// midpoint of the edge opposite it in one of its faces, to a fraction t of its height, makes
+// that face's ratio t sqrt(3)/2 (its longest edge is still the opposite one).
+TEST(Tissue3d, FlattestFaceIsAnalytic)
+{
+  EXPECT_NEAR(value(*measured("cube.data"), "tissue", FLATTEST_FACE), 0.5, 1.0e-15);
+  auto s = measured("icosahedron.data");
+  EXPECT_NEAR(value(*s, "tissue", FLATTEST_FACE), sqrt(3.0) / 2.0, 1.0e-14);
+
+  const std::vector<double> x = s->gather("x", 3);
+  auto distance = [&](int i, int j) {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) d2 += (x[3 * i + k] - x[3 * j + k]) * (x[3 * i + k] - x[3 * j + k]);
+    return sqrt(d2);
+  };
+  const double edge = 1.0 / sin(2.0 * PI / 5.0);    // circumradius 1
+  int j = -1, k = -1;    // two neighbours of atom 1 (index 0) that are neighbours of each other
+  for (int a = 1; a < 12 && k < 0; a++)
+    for (int b = a + 1; b < 12 && k < 0; b++)
+      if (fabs(distance(0, a) - edge) < 1.0e-9 && fabs(distance(0, b) - edge) < 1.0e-9 &&
+          fabs(distance(a, b) - edge) < 1.0e-9) {
+        j = a;
+        k = b;
+      }
+  ASSERT_GE(k, 0) << "no face found around atom 1";
+  const double t = 1.0e-3;
+  double moved[3];
+  for (int d = 0; d < 3; d++) {
+    const double midpoint = 0.5 * (x[3 * j + d] + x[3 * k + d]);
+    moved[d] = midpoint + t * (x[d] - midpoint);
+  }
+  std::ostringstream move;
+  move.precision(17);
+  move << "set atom 1 x " << moved[0] << " y " << moved[1] << " z " << moved[2]
+       << "\nrun 0 post no";
+  s->run(move.str());
+  EXPECT_NEAR(value(*s, "tissue", FLATTEST_FACE), t * sqrt(3.0) / 2.0, 1.0e-12);
 }
 
 // A cube (S^3/(36 pi V^2) = 6/pi) and finer icospheres, which approach the sphere's 1 from above.

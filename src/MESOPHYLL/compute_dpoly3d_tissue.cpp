@@ -12,6 +12,7 @@
 #include "error.h"
 #include "fix_dpoly3d_cells.h"
 #include "math_const.h"
+#include "math_extra.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -24,7 +25,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 const char *STYLE = "Compute dpoly3d/tissue";
-enum { PHI, MEAN_SHAPE, MEAN_NEIGHBOURS, BONDS, CELLS, PHI_PATCH, NVALUES };
+enum { PHI, MEAN_SHAPE, MEAN_NEIGHBOURS, BONDS, CELLS, PHI_PATCH, FLATTEST_FACE, NVALUES };
 enum { ID, VOLUME, SURFACE, SHAPE, NEIGHBOURS, CELL_BONDS, PATCH_VOLUME, NCOLUMNS };
 
 struct PatchVertex {
@@ -85,15 +86,29 @@ double ComputeDPoly3dTissue::patch_push()
   return 0.5 * sin(MathConst::MY_PI / 3.0);
 }
 
+double ComputeDPoly3dTissue::face_flatness(const double *a, const double *b, const double *c)
+{
+  double ab[3], bc[3], ca[3], normal[3];
+  for (int k = 0; k < 3; k++) {
+    ab[k] = b[k] - a[k];
+    bc[k] = c[k] - b[k];
+    ca[k] = a[k] - c[k];
+  }
+  MathExtra::cross3(ab, bc, normal);
+  const double longest =
+      std::max({MathExtra::lensq3(ab), MathExtra::lensq3(bc), MathExtra::lensq3(ca)});
+  return longest > 0.0 ? MathExtra::len3(normal) / longest : 0.0;    // 2 area / longest^2
+}
+
 /* ----------------------------------------------------------------------
    collective: per cell, the volume of its surface with every vertex pushed out radially, from
    the mean of the cell's vertices, by sin(pi/3) times its radius (the 2d phi_patch's rule one
    dimension up: the cell's body reaches past the vertex centres by the vertex spheres); the
-   divergence theorem over the pushed faces. From whole-system tables in ID order, so the same
-   sums on any number of ranks.
+   divergence theorem over the pushed faces. And the flattest face of all cells, on the vertex
+   centres. From whole-system tables in ID order, so the same values on any number of ranks.
 ------------------------------------------------------------------------- */
 
-std::vector<double> ComputeDPoly3dTissue::patch_volumes()
+ComputeDPoly3dTissue::SurfaceMeasures ComputeDPoly3dTissue::measure_surfaces()
 {
   const DPoly3d::VertexState state = vertex_state.get(atom, error, STYLE);
   std::vector<PatchVertex> mine;
@@ -149,11 +164,17 @@ std::vector<double> ComputeDPoly3dTissue::patch_volumes()
       error->all(FLERR, "{} {}: face vertex {} is not in the cells' group", STYLE, id, tag);
     return (size_t) (it - vertices.begin());
   };
-  std::vector<double> volume(n, 0.0);
+  SurfaceMeasures measures;
+  std::vector<double> &volume = measures.patch_volumes;
+  volume.assign(n, 0.0);
+  measures.flattest_face = faces.empty() ? 0.0 : INFINITY;
   for (const auto &f : faces) {
-    const auto &a = pushed[row_of(f.a)], &b = pushed[row_of(f.b)], &c = pushed[row_of(f.c)];
-    const int cell = cells->cell_index(vertices[row_of(f.b)].cell);
+    const size_t ra = row_of(f.a), rb = row_of(f.b), rc = row_of(f.c);
+    const auto &a = pushed[ra], &b = pushed[rb], &c = pushed[rc];
+    const int cell = cells->cell_index(vertices[rb].cell);
     if (cell < 0) continue;
+    measures.flattest_face = std::min(
+        measures.flattest_face, face_flatness(vertices[ra].x, vertices[rb].x, vertices[rc].x));
     volume[cell] += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
                      a[2] * (b[0] * c[1] - b[1] * c[0])) /
         6.0;
@@ -162,7 +183,7 @@ std::vector<double> ComputeDPoly3dTissue::patch_volumes()
     if (!std::isfinite(volume[c]))
       error->all(FLERR, "{} {} at step {}: the patch volume of cell {} is not finite", STYLE, id,
                  update->ntimestep, cells->cell_id(c));
-  return volume;
+  return measures;
 }
 
 // the hub knows its cells from the first force evaluation of a run on
@@ -194,10 +215,11 @@ void ComputeDPoly3dTissue::compute_vector()
   values[MEAN_NEIGHBOURS] = neighbours / n;
   values[BONDS] = 0.5 * bond_ends;    // each bond joins two cells
   values[CELLS] = n;
-  const std::vector<double> patch = patch_volumes();
+  const SurfaceMeasures surfaces = measure_surfaces();
   double patch_sum = 0.0;
-  for (int c = 0; c < n; c++) patch_sum += patch[c];
+  for (int c = 0; c < n; c++) patch_sum += surfaces.patch_volumes[c];
   values[PHI_PATCH] = patch_sum / (domain->xprd * domain->yprd * domain->zprd);
+  values[FLATTEST_FACE] = surfaces.flattest_face;
   vector = values;
 }
 
@@ -207,7 +229,7 @@ void ComputeDPoly3dTissue::compute_array()
   require_measured_cells();
   const DPoly::AdhesionCounts &adhesion = DPoly::adhesion_counts(lmp);
   rows = cells->ncells();
-  const std::vector<double> patch = patch_volumes();
+  const std::vector<double> patch = measure_surfaces().patch_volumes;
   memory->destroy(per_cell);
   memory->create(per_cell, std::max(rows, 1), NCOLUMNS, "dpoly3d/tissue:per_cell");
   for (int c = 0; c < rows; c++) {

@@ -21,8 +21,9 @@ namespace LAMMPS_NS {
 
 // The 3d tissue (doc/Howto_polyhedra.rst, "Observables"): volume fraction, 3d shape parameter
 // S^3/(36 pi V^2), contact number from the adhesive bonds, patch volume fraction (the cells
-// inflated by their vertex spheres, as the 2d phi_patch); globally and per cell. Volumes and
-// surface areas are the ones fix dpoly3d/cells measured at the last force evaluation.
+// inflated by their vertex spheres, as the 2d phi_patch), globally and per cell, and the
+// flattest face. Volumes and surface areas are the ones fix dpoly3d/cells measured at the last
+// force evaluation.
 class ComputeDPoly3dTissue : public Compute {
  public:
   ComputeDPoly3dTissue(class LAMMPS *, int, char **);
@@ -39,6 +40,9 @@ class ComputeDPoly3dTissue : public Compute {
   // how far a vertex is pushed out for the patch volume, in vertex diameters: sin(pi/3)/2, the
   // 2d phi_patch's push
   static double patch_push();
+  // how flat a triangle is: its height over its longest edge, 2 area / longest edge^2
+  // (sqrt(3)/2 for an equilateral one, 0 for one whose vertices are collinear)
+  static double face_flatness(const double *a, const double *b, const double *c);
 
  private:
   class FixDPoly3dCells *cells;
@@ -49,7 +53,11 @@ class ComputeDPoly3dTissue : public Compute {
 
   void find_cells();
   void require_measured_cells();
-  std::vector<double> patch_volumes();
+  struct SurfaceMeasures {
+    std::vector<double> patch_volumes;    // per cell
+    double flattest_face;                 // the smallest face_flatness() of all cells' faces
+  };
+  SurfaceMeasures measure_surfaces();
 };
 
 }    // namespace LAMMPS_NS
