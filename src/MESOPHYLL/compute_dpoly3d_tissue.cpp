@@ -167,7 +167,7 @@ ComputeDPoly3dTissue::SurfaceMeasures ComputeDPoly3dTissue::measure_surfaces()
   SurfaceMeasures measures;
   std::vector<double> &volume = measures.patch_volumes;
   volume.assign(n, 0.0);
-  measures.flattest_face = faces.empty() ? 0.0 : INFINITY;
+  measures.flattest_face = INFINITY;
   for (const auto &f : faces) {
     const size_t ra = row_of(f.a), rb = row_of(f.b), rc = row_of(f.c);
     const auto &a = pushed[ra], &b = pushed[rb], &c = pushed[rc];
@@ -179,6 +179,8 @@ ComputeDPoly3dTissue::SurfaceMeasures ComputeDPoly3dTissue::measure_surfaces()
                      a[2] * (b[0] * c[1] - b[1] * c[0])) /
         6.0;
   }
+  // no face of a hub cell: report 0 rather than carry an infinity into the output
+  if (!std::isfinite(measures.flattest_face)) measures.flattest_face = 0.0;
   for (int c = 0; c < n; c++)
     if (!std::isfinite(volume[c]))
       error->all(FLERR, "{} {} at step {}: the patch volume of cell {} is not finite", STYLE, id,
