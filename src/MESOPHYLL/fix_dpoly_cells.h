@@ -105,8 +105,14 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
   std::vector<double> unwrapped;    // owned and ghost atoms' unwrapped positions, for ring checks
-  // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
-  std::vector<int> checked_next;
+  // per owned vertex at the last ring check: its ID, its ring neighbours' IDs and the local
+  // indices of their nearest images (local indices hold until the next reneighbouring); and
+  // the number of owned and ghost atoms then
+  struct CheckedRing {
+    tagint self, prev, next;
+    int prev_image, next_image;
+  };
+  std::vector<CheckedRing> checked_rings;
   int checked_atoms;
   // keeps the adhesive bonds out of LAMMPS's image-flag check once it has said why
   std::unique_ptr<DPoly::AdhesiveBondsImageCheck> image_check;
@@ -120,6 +126,7 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   void check_segments();
   void check_cell_extents();
   void check_finite_terms();
+  bool checked_images_hold(int i, int &prev_image, int &next_image) const;
   void measure_cells();
   void apply_area_forces(int vflag);
 };
