@@ -622,31 +622,39 @@ void FixDPolyCells::unpack_forward_comm(int n, int first, double *buf)
 /* ----------------------------------------------------------------------
    the ring neighbours' images of owned vertex i recorded by the last ring check, if they are
    still its ring neighbours' nearest images: then they are what DPoly::closest_neighbour()
-   would find, without its search of every image of both atoms at every force evaluation (a
-   tenth of a 1-rank iteration at 1024 cells). In an orthogonal box an image nearer than half
-   the box length in every periodic direction is the nearest of all images; in a triclinic box
-   the search always runs.
+   would find, without its search of every image of both atoms at every force evaluation. In an
+   orthogonal box an image nearer than half the box length in every periodic direction is the
+   nearest of all images; in a triclinic box the search always runs.
 ------------------------------------------------------------------------- */
 
-bool FixDPolyCells::checked_images_hold(int i, int &prev_image, int &next_image) const
+FixDPolyCells::NearestImageBounds FixDPolyCells::nearest_image_bounds() const
 {
-  if (domain->triclinic || i >= (int) checked_rings.size()) return false;
-  const CheckedRing &ring = checked_rings[i];
   const int nall = atom->nlocal + atom->nghost;
-  if (checked_atoms != nall || ring.self != atom->tag[i]) return false;
-  const int images[2] = {ring.prev_image, ring.next_image};
-  const tagint tags[2] = {ring.prev, ring.next};
-  const double half_box[2] = {0.5 * domain->xprd, 0.5 * domain->yprd};
-  const int periodic[2] = {domain->xperiodic, domain->yperiodic};
+  NearestImageBounds bounds;
+  bounds.usable =
+      !domain->triclinic && (int) checked_rings.size() == atom->nlocal && checked_atoms == nall;
+  bounds.half_box[0] = domain->xperiodic ? 0.5 * domain->xprd : INFINITY;
+  bounds.half_box[1] = domain->yperiodic ? 0.5 * domain->yprd : INFINITY;
+  return bounds;
+}
+
+bool FixDPolyCells::checked_images_hold(int i, const NearestImageBounds &bounds, int &prev_image,
+                                        int &next_image) const
+{
+  if (!bounds.usable) return false;
+  const CheckedRing &ring = checked_rings[i];
+  const tagint *tag = atom->tag;
+  const int jp = ring.prev_image, jn = ring.next_image;
+  // indices below the atom count of the ring check are still indices of atoms
+  if (ring.self != tag[i] || jp < 0 || jn < 0 || tag[jp] != ring.prev || tag[jn] != ring.next)
+    return false;
   double **x = atom->x;
-  for (int k = 0; k < 2; k++) {
-    const int j = images[k];
-    if (j < 0 || j >= nall || atom->tag[j] != tags[k]) return false;
-    for (int d = 0; d < 2; d++)
-      if (periodic[d] && !(fabs(x[j][d] - x[i][d]) < half_box[d])) return false;
-  }
-  prev_image = ring.prev_image;
-  next_image = ring.next_image;
+  const double *hb = bounds.half_box;
+  if (!(fabs(x[jp][0] - x[i][0]) < hb[0] && fabs(x[jp][1] - x[i][1]) < hb[1] &&
+        fabs(x[jn][0] - x[i][0]) < hb[0] && fabs(x[jn][1] - x[i][1]) < hb[1]))
+    return false;
+  prev_image = jp;
+  next_image = jn;
   return true;
 }
 
@@ -667,11 +675,12 @@ void FixDPolyCells::measure_cells()
   std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
   const bool images_checked =
       (int) checked_rings.size() == nlocal && checked_atoms == nlocal + atom->nghost;
+  const NearestImageBounds bounds = nearest_image_bounds();
 
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     int jp, jn;
-    if (!checked_images_hold(i, jp, jn)) {
+    if (!checked_images_hold(i, bounds, jp, jn)) {
       const DPoly::RingLinks links = DPoly::ring_links(atom, i);
       jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
       jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");

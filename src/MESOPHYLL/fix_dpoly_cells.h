@@ -126,7 +126,14 @@ class FixDPolyCells : public Fix, public DPoly::CellHub {
   void check_segments();
   void check_cell_extents();
   void check_finite_terms();
-  bool checked_images_hold(int i, int &prev_image, int &next_image) const;
+  // where a recorded image is still the nearest one: closer than these in x and y
+  struct NearestImageBounds {
+    bool usable;    // false: search the images (triclinic box, or no ring check since the ghosts)
+    double half_box[2];    // half the box length in a periodic direction, else infinity
+  };
+  NearestImageBounds nearest_image_bounds() const;
+  bool checked_images_hold(int i, const NearestImageBounds &bounds, int &prev_image,
+                           int &next_image) const;
   void measure_cells();
   void apply_area_forces(int vflag);
 };
