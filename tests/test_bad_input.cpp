@@ -792,8 +792,9 @@ TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
   LammpsSession default_skin, large_skin;
   const std::string error = without_location(default_skin.try_run(input));
   EXPECT_THAT(error, HasSubstr("not shorter than half the box length in x (4)"));
-  EXPECT_EQ(error, without_location(large_skin.try_run(
-                       replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+  EXPECT_EQ(error,
+            without_location(large_skin.try_run(
+                replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
 }
 
 TEST(BadInputDuringRun, SegmentPastHalfTheBoxStopsTheMinimization)
