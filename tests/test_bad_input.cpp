@@ -782,6 +782,21 @@ TEST(BadInputBase, ValidTissueRunsClean)
 // The check during a run is collective: on all ranks (on 2, cell 2 lies across the ranks'
 // boundary, its vertices 5 and 6 on different ranks) the minimization stops with the message it
 // stops with on one rank, at the same step.
+// Between two reneighbourings the hub reuses the ring neighbours' images of its last ring check
+// while they are the nearest ones: with a skin so large (3) that no list is rebuilt before the
+// segment passes half the box, the minimization must stop at the same step, with the same words,
+// as with the default skin.
+TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
+{
+  const std::string input = segment_outgrows_half_box();
+  LammpsSession default_skin, large_skin;
+  const std::string error = without_location(default_skin.try_run(input));
+  EXPECT_THAT(error, HasSubstr("not shorter than half the box length in x (4)"));
+  EXPECT_EQ(error,
+            without_location(large_skin.try_run(
+                replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+}
+
 TEST(BadInputDuringRun, SegmentPastHalfTheBoxStopsTheMinimization)
 {
   const std::string input = segment_outgrows_half_box();

@@ -355,13 +355,15 @@ void FixDPolyCells::check_nearest_images()
 {
   double **x = atom->x;
   const double tolerance = 1.0e-8 * (domain->xprd + domain->yprd);
-  checked_next.assign(atom->nlocal, -1);
+  checked_rings.assign(atom->nlocal, {0, 0, 0, -1, -1});
   checked_atoms = atom->nlocal + atom->nghost;
   tagint broken = 0;    // largest vertex ID whose next vertex is not where its ring continues
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const int j = domain->closest_image(i, atom->map(DPoly::ring_links(atom, i).next));
-    checked_next[i] = j;
+    const DPoly::RingLinks links = DPoly::ring_links(atom, i);
+    const int j = domain->closest_image(i, atom->map(links.next));
+    checked_rings[i] = {atom->tag[i], links.prev, links.next,
+                        domain->closest_image(i, atom->map(links.prev)), j};
     bool whole = j >= 0;
     for (int d = 0; d < 2 && whole; d++)
       whole = fabs(unwrapped[3 * i + d] + x[j][d] - x[i][d] - unwrapped[3 * j + d]) <= tolerance;
@@ -455,6 +457,45 @@ void FixDPolyCells::check_cell_extents()
 }
 
 /* ----------------------------------------------------------------------
+   the ring neighbours' images of owned vertex i recorded by the last ring check, if they are
+   still its ring neighbours' nearest images: then they are what DPoly::closest_neighbour()
+   would find, without its search of every image of both atoms at every force evaluation. In an
+   orthogonal box an image nearer than half the box length in every periodic direction is the
+   nearest of all images; in a triclinic box the search always runs.
+------------------------------------------------------------------------- */
+
+FixDPolyCells::NearestImageBounds FixDPolyCells::nearest_image_bounds() const
+{
+  const int nall = atom->nlocal + atom->nghost;
+  NearestImageBounds bounds;
+  bounds.usable =
+      !domain->triclinic && (int) checked_rings.size() == atom->nlocal && checked_atoms == nall;
+  bounds.half_box[0] = domain->xperiodic ? 0.5 * domain->xprd : INFINITY;
+  bounds.half_box[1] = domain->yperiodic ? 0.5 * domain->yprd : INFINITY;
+  return bounds;
+}
+
+bool FixDPolyCells::checked_images_hold(int i, const NearestImageBounds &bounds, int &prev_image,
+                                        int &next_image) const
+{
+  if (!bounds.usable) return false;
+  const CheckedRing &ring = checked_rings[i];
+  const tagint *tag = atom->tag;
+  const int jp = ring.prev_image, jn = ring.next_image;
+  // indices below the atom count of the ring check are still indices of atoms
+  if (ring.self != tag[i] || jp < 0 || jn < 0 || tag[jp] != ring.prev || tag[jn] != ring.next)
+    return false;
+  double **x = atom->x;
+  const double *hb = bounds.half_box;
+  if (!(fabs(x[jp][0] - x[i][0]) < hb[0] && fabs(x[jp][1] - x[i][1]) < hb[1] &&
+        fabs(x[jn][0] - x[i][0]) < hb[0] && fabs(x[jn][1] - x[i][1]) < hb[1]))
+    return false;
+  prev_image = jp;
+  next_image = jn;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
    collective: area (shoelace on unwrapped positions) and perimeter of every cell. A nearest
    image of a next vertex other than the one of the last ring check (the ghosts are the same
    until the next reneighbouring) means a segment just passed half the box: the ring check
@@ -470,14 +511,18 @@ void FixDPolyCells::measure_cells()
   const int moved = 2 * ncells();    // slot of the count of next vertices with another image
   std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
   const bool images_checked =
-      (int) checked_next.size() == nlocal && checked_atoms == nlocal + atom->nghost;
+      (int) checked_rings.size() == nlocal && checked_atoms == nlocal + atom->nghost;
+  const NearestImageBounds bounds = nearest_image_bounds();
 
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const DPoly::RingLinks links = DPoly::ring_links(atom, i);
-    const int jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
-    const int jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
-    if (images_checked && jn != checked_next[i]) local[moved] += 1.0;
+    int jp, jn;
+    if (!checked_images_hold(i, bounds, jp, jn)) {
+      const DPoly::RingLinks links = DPoly::ring_links(atom, i);
+      jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
+      jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
+      if (images_checked && jn != checked_rings[i].next_image) local[moved] += 1.0;
+    }
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)
       error->one(FLERR,

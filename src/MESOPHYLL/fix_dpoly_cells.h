@@ -81,12 +81,26 @@ class FixDPolyCells : public FixDPolyHub {
 
   // per owned vertex, minimum-image vectors to the previous and next ring vertex
   std::vector<double> to_prev, to_next;
-  // per owned vertex, the image of its next vertex at the last ring check, and the atoms then
-  std::vector<int> checked_next;
+  // per owned vertex at the last ring check: its ID, its ring neighbours' IDs and the local
+  // indices of their nearest images (local indices hold until the next reneighbouring); and
+  // the number of owned and ghost atoms then
+  struct CheckedRing {
+    tagint self, prev, next;
+    int prev_image, next_image;
+  };
+  std::vector<CheckedRing> checked_rings;
   int checked_atoms;
   DPoly::VertexStateCache vertex_state;
 
   void check_finite_terms();
+  // where a recorded image is still the nearest one: closer than these in x and y
+  struct NearestImageBounds {
+    bool usable;    // false: search the images (triclinic box, or no ring check since the ghosts)
+    double half_box[2];    // half the box length in a periodic direction, else infinity
+  };
+  NearestImageBounds nearest_image_bounds() const;
+  bool checked_images_hold(int i, const NearestImageBounds &bounds, int &prev_image,
+                           int &next_image) const;
   void apply_area_forces(int vflag);
 };
 
