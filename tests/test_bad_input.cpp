@@ -792,6 +792,9 @@ TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
   EXPECT_EQ(error,
             without_location(large_skin.try_run(
                 replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+  // no list was rebuilt during the minimization: the reuse is what ran until the error
+  EXPECT_EQ(large_skin.neighbour_builds(), 0);
+  EXPECT_GT(default_skin.neighbour_builds(), 0);
 }
 
 // The check during a run is collective: on all ranks (on 2, cell 2 lies across the ranks'
