@@ -313,7 +313,10 @@ def main():
         for key in ("cpu_s", "wall_s", "iterations", "cpu_us_per_iteration_vertex"):
             pts = [(n, growth_cost(rows, n, ranks, key)) for n in args.cells]
             pts = [(n, y) for n, y in pts if y is not None]
-            s = slope(*zip(*pts)) if len(pts) > 1 else float("nan")
+            if len(pts) < 2:    # a slope needs two sizes; a nan row would read as a result
+                print(f"  {ranks} rank(s) {key:>28}: fewer than 2 sizes ran")
+                continue
+            s = slope(*zip(*pts))
             print(f"  {ranks} rank(s) {key:>28}: {s:.3f}")
             rows.append({"kind": "slope", "ranks": ranks, "value": round(s, 3),
                          "note": f"{key} of a growth step against N = "

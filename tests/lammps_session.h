@@ -6,6 +6,8 @@
 
 #define LAMMPS_LIB_MPI 1    // lammps_open() with a communicator
 #include "library.h"
+#include "lammps.h"
+#include "neighbor.h"
 
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
@@ -47,6 +49,12 @@ class LammpsSession {
   // meant to fail goes here: LAMMPS's Input::execute_command() does not delete a command that
   // stops with an error, so the sanitized build leaves what this input allocates out of its
   // leak check (run() does not call try_run: all other input stays checked).
+  // Neighbour list builds since the last run or minimization was initialised.
+  int neighbour_builds() const
+  {
+    return static_cast<LAMMPS_NS::LAMMPS *>(handle)->neighbor->ncalls;
+  }
+
   std::string try_run(const std::string &lines)
   {
 #ifdef MESOPHYLL_LSAN

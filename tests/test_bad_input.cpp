@@ -779,9 +779,6 @@ TEST(BadInputBase, ValidTissueRunsClean)
   EXPECT_THAT(r.warnings, ::testing::Not(HasSubstr("FAILED")));
 }
 
-// The check during a run is collective: on all ranks (on 2, cell 2 lies across the ranks'
-// boundary, its vertices 5 and 6 on different ranks) the minimization stops with the message it
-// stops with on one rank, at the same step.
 // Between two reneighbourings the hub reuses the ring neighbours' images of its last ring check
 // while they are the nearest ones: with a skin so large (3) that no list is rebuilt before the
 // segment passes half the box, the minimization must stop at the same step, with the same words,
@@ -795,8 +792,14 @@ TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
   EXPECT_EQ(error,
             without_location(large_skin.try_run(
                 replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+  // no list was rebuilt during the minimization: the reuse is what ran until the error
+  EXPECT_EQ(large_skin.neighbour_builds(), 0);
+  EXPECT_GT(default_skin.neighbour_builds(), 0);
 }
 
+// The check during a run is collective: on all ranks (on 2, cell 2 lies across the ranks'
+// boundary, its vertices 5 and 6 on different ranks) the minimization stops with the message it
+// stops with on one rank, at the same step.
 TEST(BadInputDuringRun, SegmentPastHalfTheBoxStopsTheMinimization)
 {
   const std::string input = segment_outgrows_half_box();

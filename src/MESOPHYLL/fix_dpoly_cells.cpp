@@ -464,12 +464,17 @@ void FixDPolyCells::check_cell_extents()
    nearest of all images; in a triclinic box the search always runs.
 ------------------------------------------------------------------------- */
 
+// the last ring check recorded the images of every owned vertex of the present atom numbering
+bool FixDPolyCells::images_recorded() const
+{
+  return (int) checked_rings.size() == atom->nlocal &&
+      checked_atoms == atom->nlocal + atom->nghost;
+}
+
 FixDPolyCells::NearestImageBounds FixDPolyCells::nearest_image_bounds() const
 {
-  const int nall = atom->nlocal + atom->nghost;
   NearestImageBounds bounds;
-  bounds.usable =
-      !domain->triclinic && (int) checked_rings.size() == atom->nlocal && checked_atoms == nall;
+  bounds.usable = !domain->triclinic && images_recorded();
   bounds.half_box[0] = domain->xperiodic ? 0.5 * domain->xprd : INFINITY;
   bounds.half_box[1] = domain->yperiodic ? 0.5 * domain->yprd : INFINITY;
   return bounds;
@@ -510,8 +515,7 @@ void FixDPolyCells::measure_cells()
   to_next.assign(2 * (size_t) nlocal, 0.0);
   const int moved = 2 * ncells();    // slot of the count of next vertices with another image
   std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
-  const bool images_checked =
-      (int) checked_rings.size() == nlocal && checked_atoms == nlocal + atom->nghost;
+  const bool images_checked = images_recorded();
   const NearestImageBounds bounds = nearest_image_bounds();
 
   for (int i = 0; i < nlocal; i++) {

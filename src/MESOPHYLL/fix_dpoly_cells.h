@@ -98,6 +98,7 @@ class FixDPolyCells : public FixDPolyHub {
     bool usable;    // false: search the images (triclinic box, or no ring check since the ghosts)
     double half_box[2];    // half the box length in a periodic direction, else infinity
   };
+  bool images_recorded() const;
   NearestImageBounds nearest_image_bounds() const;
   bool checked_images_hold(int i, const NearestImageBounds &bounds, int &prev_image,
                            int &next_image) const;
