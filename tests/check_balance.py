@@ -15,7 +15,6 @@ imbalance line before and after, or the per-rank atom counts, differ) on more th
 `fix balance` is not tried: LAMMPS does not invoke it during minimization, the package's only
 dynamics (Howto, "Running on a cluster").
 """
-import argparse
 import os
 import re
 import subprocess
@@ -25,7 +24,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from regression import add_launcher_arguments, launch, thermo_blocks, tissue_commands  # noqa: E402
+from regression import launch, parse_lmp_arguments, thermo_blocks, tissue_commands  # noqa: E402
 
 TISSUE = os.path.join(ROOT, "examples", "mesophyll", "tissue_N16.data")
 COLUMNS = ["PotEng", "Press", "Volume", "c_tissue[1]", "c_tissue[2]"]
@@ -70,11 +69,7 @@ def run(args, work, name, balance):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__)
     cut = "balance 1.0 x 0.3" if args.np > 1 else "balance 1.0 shift xy 10 1.0"
     with tempfile.TemporaryDirectory() as work:
         plain = thermo_blocks(run(args, work, "plain", ""))

@@ -22,7 +22,6 @@ main example's settings. Checked:
    step).
 Standard library only.
 """
-import argparse
 import math
 import os
 import subprocess
@@ -31,7 +30,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
+from regression import launch, parse_lmp_arguments, tissue_commands    # noqa: E402
 
 TOOL = os.path.join(os.path.dirname(HERE), "tools", "replicate_tissue.py")
 FTOL_RMS = 1.0e-9      # per degree of freedom: loose enough for a test of seconds
@@ -88,12 +87,7 @@ def rms(row, box):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--example", required=True)
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__, lambda p: p.add_argument("--example", required=True))
     original = os.path.join(os.path.abspath(args.example), "tissue_N16.data")
     failures = []
     with tempfile.TemporaryDirectory() as work:

@@ -31,7 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from regression import add_launcher_arguments, launch, tissue_commands  # noqa: E402
+from regression import launch, parse_lmp_arguments, tissue_commands  # noqa: E402
 from lammps_data import DataFile  # noqa: E402
 
 TOOL = os.path.join(ROOT, "tools", "make_tissue.py")
@@ -234,11 +234,7 @@ def check_arguments(work):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__)
     with tempfile.TemporaryDirectory() as work:
         rings = check_seeding(work)
         check_polydisperse(work)

@@ -106,7 +106,7 @@ def add_launcher_arguments(parser):
                         help="flags after the program (MPIEXEC_POSTFLAGS)")
 
 
-def parse_lmp_arguments(doc, add_own):
+def parse_lmp_arguments(doc, add_own=lambda parser: None):
     """The command line of a script that runs lmp: --lmp (made absolute), the launcher options and
     the script's own, which add_own(parser) adds; doc's first line describes the script."""
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])

@@ -13,7 +13,6 @@ A bond joined to the wrong copy of its partner is a segment half a box long and 
 energy by orders of magnitude; a wrong image flag breaks a ring (fix dpoly/cells stops).
 Standard library only.
 """
-import argparse
 import os
 import subprocess
 import sys
@@ -21,7 +20,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from regression import add_launcher_arguments, launch, tissue_commands    # noqa: E402
+from regression import launch, parse_lmp_arguments, tissue_commands    # noqa: E402
 
 TOOL = os.path.join(os.path.dirname(HERE), "tools", "replicate_tissue.py")
 RTOL = 1e-10
@@ -54,12 +53,7 @@ def evaluate(args, workdir, data):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--example", required=True)
-    add_launcher_arguments(p)
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
+    args = parse_lmp_arguments(__doc__, lambda p: p.add_argument("--example", required=True))
     original = os.path.join(os.path.abspath(args.example), "tissue_N16.data")
     failures = 0
     with tempfile.TemporaryDirectory() as work:
