@@ -7,7 +7,10 @@
    component (fmax) and the box's force 2 V (P - P0), in windows of iterations, with the decay
    rate of log10 fnorm per 10^4 iterations in each window (a slow mode decays at a steady small
    rate, a floor does not decay, an oscillation goes up and down);
-2. where the residual force sits: the atoms with the largest force, their cell and the part of
+2. the slowest mode: the change of the positions between the last two snapshots of slow.dump
+   (late in the minimization every faster mode has decayed), per cell, and how much of it each
+   cell's rigid motion (translation and rotation) carries;
+3. where the residual force sits: the atoms with the largest force, their cell and the part of
    their force from each term (forces.<term>.dump: the force without a term, subtracted from the
    force with all; the area term is what is left), and the squared force per cell.
 Standard library only.
@@ -56,6 +59,76 @@ def read_dump(path):
     return atoms
 
 
+def snapshots(path):
+    """slow.dump as a list of (step, {id: (mol, x, y)})."""
+    shots, lines = [], open(path).read().splitlines()
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+            count = int(lines[k + 3])
+            names = lines[k + 8].split()[2:]
+            atoms = {}
+            for line in lines[k + 9:k + 9 + count]:
+                row = dict(zip(names, line.split()))
+                atoms[int(row["id"])] = (int(row["mol"]), float(row["xu"]), float(row["yu"]))
+            shots.append((step, atoms))
+            k += 9 + count
+        else:
+            k += 1
+    return shots
+
+
+def slow_mode(path):
+    shots = snapshots(path)
+    if len(shots) < 2:
+        print(f"{path}: fewer than 2 snapshots")
+        return
+    # the last two snapshots a full dump interval apart (the final one may come sooner)
+    gaps = [shots[k + 1][0] - shots[k][0] for k in range(len(shots) - 1)]
+    interval = max(set(gaps), key=gaps.count)
+    k = max(k for k, g in enumerate(gaps) if g == interval)
+    (s1, a), (s2, b) = shots[k], shots[k + 1]
+    common = [i for i in b if i in a]
+    d = {i: (b[i][1] - a[i][1], b[i][2] - a[i][2]) for i in common}
+    # the whole tissue's translation costs nothing and is no mode of the force: taken out
+    mx = sum(v[0] for v in d.values()) / len(d)
+    my = sum(v[1] for v in d.values()) / len(d)
+    whole = sum(v[0] ** 2 + v[1] ** 2 for v in d.values())
+    d = {i: (v[0] - mx, v[1] - my) for i, v in d.items()}
+    total = sum(dx * dx + dy * dy for dx, dy in d.values())
+    print(f"\nslowest mode: positions at step {s2} minus step {s1}: the whole tissue moved "
+          f"({mx:.3g}, {my:.3g}), {len(d) * (mx * mx + my * my) / whole:.3f} of |dx|^2; the rest: "
+          f"|dx| = {math.sqrt(total):.3g}, largest on one vertex "
+          f"{max(math.hypot(*v) for v in d.values()):.3g}")
+    if total == 0.0:
+        return
+    cells = {}
+    for i in common:
+        cells.setdefault(a[i][0], []).append(i)
+    rows = []
+    for c, ids in cells.items():
+        n = len(ids)
+        cx = sum(a[i][1] for i in ids) / n
+        cy = sum(a[i][2] for i in ids) / n
+        tx = sum(d[i][0] for i in ids) / n
+        ty = sum(d[i][1] for i in ids) / n
+        # rotation about the centroid: least squares angle of the displacements minus translation
+        num = sum((a[i][1] - cx) * (d[i][1] - ty) - (a[i][2] - cy) * (d[i][0] - tx) for i in ids)
+        den = sum((a[i][1] - cx) ** 2 + (a[i][2] - cy) ** 2 for i in ids)
+        w = num / den if den else 0.0
+        cell2 = sum(d[i][0] ** 2 + d[i][1] ** 2 for i in ids)
+        rigid2 = n * (tx * tx + ty * ty) + w * w * den
+        rows.append((cell2, c, n, math.hypot(tx, ty) , w, rigid2))
+    rows.sort(reverse=True)
+    rigid = sum(r[5] for r in rows)
+    print(f"share of |dx|^2 in the cells' rigid translations and rotations: {rigid / total:.3f}")
+    print(f"{'cell':>4} {'vertices':>8} {'share':>6} {'translation':>11} {'rotation':>10} "
+          f"{'rigid share of cell':>19}")
+    for cell2, c, n, t, w, rigid2 in rows[:6]:
+        print(f"{c:>4} {n:>8} {cell2 / total:>6.3f} {t:>11.3g} {w:>10.3g} {rigid2 / cell2:>19.3f}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("dir", nargs="?", default=".")
@@ -85,6 +158,8 @@ def main():
               f"{max(r['Volume'] for r in w) - min(r['Volume'] for r in w):>11.3g} "
               f"{w[-1].get('c_tissue[2]', float('nan')):>9.5f}")
 
+    if os.path.exists("slow.dump"):
+        slow_mode("slow.dump")
     if not os.path.exists("forces.all.dump"):
         print("no forces.all.dump: the minimization did not finish")
         return
