@@ -7,7 +7,10 @@ Runs in.mesophyll_short for a few growth steps and checks that its log has exact
 "growth step k/K: P .. phi .. phi_patch .. ... <min_style> iterations N; A min so far, about B min
 left (estimate: S s per growth step so far x L steps left)" per step, in order, whose phi,
 phi_patch and iterations are those of the growth table the same run wrote, with L = K - k,
-S > 0 and finite, A = S k / 60 and B = S L / 60 to their printed digits, A not falling.
+S > 0 and finite, A = S k / 60 and B = S L / 60 to their printed digits, A not falling; and,
+per growth step, one closing line of min_style fire/nph ("fire/nph: N iterations, U uphill ...,
+mean time step T (tmax x timestep = C)") with the same N, U <= N, 0 < T <= C and C = 5 x the
+timestep given by in.mesophyll's -var timestep (--timestep, 0.008 here: not its default).
 Standard library only (regression.py's launcher).
 """
 import argparse
@@ -23,6 +26,8 @@ import regression    # noqa: E402
 LINE = re.compile(r"^growth step (\d+)/(\d+): P (\S+) phi (\S+) phi_patch (\S+) <calA> \S+ <z> \S+ "
                   r"bonds \S+ (\S+) iterations (\d+); (\S+) min so far, about (\S+) min left "
                   r"\(estimate: (\S+) s per growth step so far x (\d+) steps left\)$")
+FIRE = re.compile(r"^  fire/nph: (\d+) iterations, (\d+) uphill .*, mean time step (\S+) "
+                  r"\(tmax x timestep = (\S+)\)$")
 
 
 def main():
@@ -30,21 +35,36 @@ def main():
     p.add_argument("--lmp", required=True)
     p.add_argument("--example", required=True)
     p.add_argument("--steps", type=int, default=2)
+    p.add_argument("--timestep", default="0.008")
     regression.add_launcher_arguments(p)
     args = p.parse_args()
     args.lmp = os.path.abspath(args.lmp)
     args.input = "in.mesophyll_short"
-    args.var = [("steps", str(args.steps)), ("restart_every", "0")]
+    args.var = [("steps", str(args.steps)), ("restart_every", "0"), ("timestep", args.timestep)]
 
     problems = []
     with tempfile.TemporaryDirectory() as work:
         log = regression.run_example(args, work, "log.progress")
         with open(log) as f:
-            lines = [m for m in (LINE.match(line.rstrip("\n")) for line in f) if m]
+            text = f.read().splitlines()
+        lines = [m for m in (LINE.match(line) for line in text) if m]
+        fire = [m for m in (FIRE.match(line) for line in text) if m]
         with open(os.path.join(work, "growth.N16.txt")) as f:
             table = [line.split() for line in f if not line.startswith("#")]
     if len(lines) != args.steps:
         problems.append(f"{len(lines)} progress lines, expected {args.steps}")
+    if len(fire) != args.steps:
+        problems.append(f"{len(fire)} fire/nph closing lines, expected {args.steps}")
+    for k, (m, row) in enumerate(zip(fire, table), start=1):
+        iterations, uphill, mean_dt, cap = int(m[1]), int(m[2]), float(m[3]), float(m[4])
+        if str(iterations) != row[8]:
+            problems.append(f"step {k}: fire/nph says {iterations} iterations, table {row[8]}")
+        if uphill > iterations:
+            problems.append(f"step {k}: {uphill} uphill steps in {iterations} iterations")
+        if abs(cap - 5 * float(args.timestep)) > 1e-12:
+            problems.append(f"step {k}: cap {cap}, not 5 x timestep {args.timestep}")
+        if not 0 < mean_dt <= cap * (1 + 1e-3):
+            problems.append(f"step {k}: mean time step {mean_dt}, cap {cap}")
     so_far_before = 0.0
     for k, (m, row) in enumerate(zip(lines, table), start=1):
         step, steps, _, phi, phi_patch, style, iterations, so_far, left, per_step, steps_left = \
@@ -76,7 +96,8 @@ def main():
         print("FAIL:", problem)
     if problems:
         return 1
-    print(f"OK: {len(lines)} progress lines, phi, phi_patch and iterations as in the growth table")
+    print(f"OK: {len(lines)} progress lines, phi, phi_patch and iterations as in the growth table; "
+          f"fire/nph's closing lines agree, cap 5 x timestep {args.timestep}")
     return 0
 
 

@@ -107,6 +107,7 @@ void MinFireNph::init()
   last_drift_time = 0.0;
   last_negative = update->ntimestep;
   stall = StallRecord();
+  run_record = RunRecord();
 }
 
 /* ----------------------------------------------------------------------
@@ -334,7 +335,10 @@ int MinFireNph::iterate(int maxiter)
   const double ftm2v = force->ftm2v;
 
   for (int iter = 0; iter < maxiter; iter++) {
-    if (timer->check_timeout(niter)) return TIMEOUT;
+    if (timer->check_timeout(niter)) {
+      log_run_record();
+      return TIMEOUT;
+    }
     const bigint ntimestep = ++update->ntimestep;
     niter++;
 
@@ -348,6 +352,9 @@ int MinFireNph::iterate(int maxiter)
       // recovered: dt is back at the timestep (or at tmax x timestep, if that is lower)
       if (dt > dtmin && dt >= std::min(update->dt, dtmax)) stall = StallRecord();
     } else {
+      run_record.uphill++;
+      if (power.atoms < 0.0) run_record.atoms_uphill++;
+      if (power.box < 0.0) run_record.box_uphill++;
       last_negative = ntimestep;
       if (!(delaystep_start_flag && ntimestep - update->firststep <= delaystep)) {
         dt = std::max(dt * dtshrink, dtmin);
@@ -359,6 +366,9 @@ int MinFireNph::iterate(int maxiter)
       if (halfstepback_flag) move(-0.5 * std::min(dt, last_drift_time));
       zero_velocities();
     }
+
+    run_record.steps++;
+    run_record.dt_sum += dt;
 
     // semi-implicit Euler: kick with the current forces, steer, then drift
     for (int i = 0; i < nvec; i++) velocity[i] += dt * ftm2v * fvec[i] / atom_mass(i / 3);
@@ -378,8 +388,10 @@ int MinFireNph::iterate(int maxiter)
 
     if (update->etol > 0.0 && ntimestep - last_negative > delaystep &&
         fabs(ecurrent - eprevious) <
-            update->etol * 0.5 * (fabs(ecurrent) + fabs(eprevious) + EPS_ENERGY))
+            update->etol * 0.5 * (fabs(ecurrent) + fabs(eprevious) + EPS_ENERGY)) {
+      log_run_record();
       return ETOL;
+    }
 
     if (update->ftol > 0.0) {
       double fdotf;
@@ -391,7 +403,10 @@ int MinFireNph::iterate(int maxiter)
         fdotf = fnorm_inf();
       else
         fdotf = fnorm_sqr();
-      if (fdotf < update->ftol * update->ftol) return FTOL;
+      if (fdotf < update->ftol * update->ftol) {
+        log_run_record();
+        return FTOL;
+      }
     }
 
     if (output->next == ntimestep) {
@@ -400,7 +415,19 @@ int MinFireNph::iterate(int maxiter)
       timer->stamp(Timer::OUTPUT);
     }
   }
+  log_run_record();
   return MAXITER;
+}
+
+void MinFireNph::log_run_record() const
+{
+  if (comm->me != 0 || run_record.steps == 0) return;
+  utils::logmesg(lmp,
+                 "  fire/nph: {} iterations, {} uphill (velocities zeroed; the atoms' power "
+                 "negative in {}, the box's in {}), mean time step {:.4g} (tmax x timestep = "
+                 "{:.4g})\n",
+                 run_record.steps, run_record.uphill, run_record.atoms_uphill,
+                 run_record.box_uphill, run_record.dt_sum / (double) run_record.steps, dtmax);
 }
 
 /* ----------------------------------------------------------------------

@@ -60,6 +60,18 @@ class MinFireNph : public Min {
     bigint box_limited;      // ... shortened for the box (dmax or fix box/relax's vmax)
   } stall;
 
+  // this minimization so far, for the line it logs at its end: how often FIRE turned uphill (and
+  // so restarted from rest) and its mean time step; a FIRE that restarts every few steps moves
+  // its soft modes as steepest descent does, by far slower than with momentum
+  struct RunRecord {
+    bigint steps;          // iterations
+    bigint uphill;         // uphill steps (velocities zeroed)
+    bigint atoms_uphill;   // ... in which the atoms' own power was negative
+    bigint box_uphill;     // ... in which the box's own power was negative
+    double dt_sum;         // sum of FIRE's time step over the iterations
+  } run_record;
+  void log_run_record() const;
+
   struct Power {
     double total, atoms, box;
   };
