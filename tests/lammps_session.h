@@ -8,6 +8,7 @@
 #include "library.h"
 #include "lammps.h"
 #include "neighbor.h"
+#include "update.h"
 
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
@@ -53,6 +54,12 @@ class LammpsSession {
   int neighbour_builds() const
   {
     return static_cast<LAMMPS_NS::LAMMPS *>(handle)->neighbor->ncalls;
+  }
+
+  // The step the last run or minimization reached (also after it stopped with an error).
+  long long current_step() const
+  {
+    return static_cast<LAMMPS_NS::LAMMPS *>(handle)->update->ntimestep;
   }
 
   std::string try_run(const std::string &lines)

@@ -12,6 +12,7 @@
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -57,6 +58,20 @@ Tissue stretched_tissue(double length)
              {{{2.2, 1.0}, {2.2 + length, 1.0}, {2.2 + length, 2.0}, {2.2, 2.0}}}};
   t.adhesive = {{2, 5}, {3, 8}};
   t.box = 8.0;
+  return t;
+}
+
+// stretched_tissue() turned on its side: x and y swapped, each ring's order reversed so that it
+// stays counter-clockwise. The atom numbering comes out the same: segment 5-6 of cell 2 now runs
+// along y, and the adhesive bonds join the same atoms.
+Tissue stretched_tissue_along_y(double length)
+{
+  Tissue t = stretched_tissue(length);
+  for (Polygon &cell : t.cells) {
+    for (auto &corner : cell.corners) std::swap(corner.first, corner.second);
+    std::reverse(cell.corners.begin() + 1, cell.corners.end());
+    std::rotate(cell.corners.begin(), cell.corners.begin() + 1, cell.corners.end());
+  }
   return t;
 }
 
@@ -793,6 +808,57 @@ TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
             without_location(large_skin.try_run(
                 replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
   // no list was rebuilt during the minimization: the reuse is what ran until the error
+  EXPECT_EQ(large_skin.neighbour_builds(), 0);
+  EXPECT_GT(default_skin.neighbour_builds(), 0);
+}
+
+// The same along y: the reuse bounds the distance to a recorded image in y as well as in x.
+TEST(BadInputDuringRun, SegmentPastHalfTheBoxInYIsSeenWithoutReneighbouring)
+{
+  const std::string input =
+      on_tissue(write_tissue(stretched_tissue_along_y(3.8), "bad_input_stretched_y.data"),
+                "comm_modify cutoff 4.5\nset atom 5 d_l0 6.0\nmin_style fire\n"
+                "minimize 0.0 1.0e-8 5000 50000\n");
+  LammpsSession default_skin, large_skin;
+  const std::string error = without_location(default_skin.try_run(input));
+  EXPECT_THAT(error, HasSubstr("ring segment 5-6 of cell 2 is "));
+  EXPECT_THAT(error, HasSubstr("not shorter than half the box length in y (4)"));
+  EXPECT_EQ(error,
+            without_location(large_skin.try_run(
+                replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+  EXPECT_EQ(large_skin.neighbour_builds(), 0);
+  EXPECT_GT(default_skin.neighbour_builds(), 0);
+}
+
+// In a triclinic box the nearest image can change before a segment reaches half the box length
+// in x or y, so there the hub searches the images at every force evaluation. A segment along
+// the diagonal of a box of 8 tilted by 3.9 in xy: the image across the tilted face becomes the
+// nearer one when the segment is about 4.7 long (3.3 in x and y, under half the box); with a
+// skin so large that no list is rebuilt, the minimization must stop at the same step with the
+// same words as with the default skin.
+TEST(BadInputDuringRun, NearestImageChangeInATiltedBoxIsSeenWithoutReneighbouring)
+{
+  const double u = sqrt(0.5), length = 4.4;
+  Tissue t;
+  t.cells = {{{{3.0, 1.0},
+               {3.0 + length * u, 1.0 + length * u},
+               {3.0 + (length - 1.0) * u, 1.0 + (length + 1.0) * u},
+               {3.0 - u, 1.0 + u}}}};
+  t.box = 8.0;
+  const std::string data = write_text(replaced(read_text(write_tissue(t, "bad_input_tilt.data")),
+                                               "-0.5 0.5 zlo zhi\n",
+                                               "-0.5 0.5 zlo zhi\n3.9 0 0 xy xz yz\n"),
+                                      "bad_input_tilted.data");
+  const std::string input =
+      on_tissue(data, "comm_modify cutoff 6.5\nset atom 1 d_l0 7.0\nmin_style fire\n"
+                      "minimize 0.0 1.0e-8 5000 50000\n");
+  LammpsSession default_skin, large_skin;
+  const std::string error = without_location(default_skin.try_run(input));
+  EXPECT_THAT(error, HasSubstr("the ring is not whole between vertex 1 and its next vertex"));
+  EXPECT_EQ(error,
+            without_location(large_skin.try_run(
+                replaced(input, "min_style fire\n", "neighbor 3.0 bin\nmin_style fire\n"))));
+  EXPECT_EQ(large_skin.current_step(), default_skin.current_step());
   EXPECT_EQ(large_skin.neighbour_builds(), 0);
   EXPECT_GT(default_skin.neighbour_builds(), 0);
 }

@@ -474,7 +474,8 @@ bool FixDPolyCells::images_recorded() const
 FixDPolyCells::NearestImageBounds FixDPolyCells::nearest_image_bounds() const
 {
   NearestImageBounds bounds;
-  bounds.usable = !domain->triclinic && images_recorded();
+  bounds.recorded = images_recorded();
+  bounds.usable = !domain->triclinic && bounds.recorded;
   bounds.half_box[0] = domain->xperiodic ? 0.5 * domain->xprd : INFINITY;
   bounds.half_box[1] = domain->yperiodic ? 0.5 * domain->yprd : INFINITY;
   return bounds;
@@ -515,7 +516,6 @@ void FixDPolyCells::measure_cells()
   to_next.assign(2 * (size_t) nlocal, 0.0);
   const int moved = 2 * ncells();    // slot of the count of next vertices with another image
   std::vector<double> local(moved + 1, 0.0), global(moved + 1, 0.0);
-  const bool images_checked = images_recorded();
   const NearestImageBounds bounds = nearest_image_bounds();
 
   for (int i = 0; i < nlocal; i++) {
@@ -525,7 +525,7 @@ void FixDPolyCells::measure_cells()
       const DPoly::RingLinks links = DPoly::ring_links(atom, i);
       jp = DPoly::closest_neighbour(lmp, i, links.prev, "Fix dpoly/cells");
       jn = DPoly::closest_neighbour(lmp, i, links.next, "Fix dpoly/cells");
-      if (images_checked && jn != checked_rings[i].next_image) local[moved] += 1.0;
+      if (bounds.recorded && jn != checked_rings[i].next_image) local[moved] += 1.0;
     }
     const int c = cell_index(atom->molecule[i]);
     if (c < 0)

@@ -95,7 +95,8 @@ class FixDPolyCells : public FixDPolyHub {
   void check_finite_terms();
   // where a recorded image is still the nearest one: closer than these in x and y
   struct NearestImageBounds {
-    bool usable;    // false: search the images (triclinic box, or no ring check since the ghosts)
+    bool recorded;    // the last ring check recorded the images of the present atom numbering
+    bool usable;      // false: search the images (triclinic box, or not recorded)
     double half_box[2];    // half the box length in a periodic direction, else infinity
   };
   bool images_recorded() const;
