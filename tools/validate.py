@@ -300,6 +300,7 @@ def write_report(runs, out, quick):
     path = os.path.join(out, "validation.md")
     _, kept = split_published_section(path)
     sweeps = marked_section(path, SWEEPS_BEGIN, SWEEPS_END)
+    sweeps += marked_section(path, STALL_BEGIN, STALL_END)    # written by hand, after the sweeps
     threed = marked_section(path, THREED_BEGIN, THREED_END)
     if threed:  # written by hand: split_published_section left it in the text it drops
         kept += threed
@@ -310,6 +311,8 @@ def write_report(runs, out, quick):
 
 PUB_BEGIN, PUB_END = "<!-- published: tools/validate.py --published -->", "<!-- /published -->"
 SWEEPS_BEGIN, SWEEPS_END = "<!-- sweeps: tools/sweep_report.py -->", "<!-- /sweeps -->"
+STALL_BEGIN, STALL_END = ("<!-- fig4 stall: validation/fig4_stall, written by hand -->",
+                          "<!-- /fig4 stall -->")
 THREED_BEGIN, THREED_END = ("<!-- 3d: examples/polyhedra/in.grow_tissue3d, written by hand -->",
                             "<!-- /3d -->")
 
