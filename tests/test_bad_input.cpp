@@ -682,7 +682,9 @@ std::vector<Case> cases()
             MINIMIZE_TISSUE;
       },
       "a force changes faster than even that step resolves (a very stiff or non-smooth term, as "
-      "after a change of the system too large for one minimization, e.g. a large growth step)");
+      "after a change of the system too large for one minimization, e.g. a large growth step). A "
+      "collapsed ring or face or a tangled state stays so at any timestep: run fix dpoly/check (or "
+      "look at the largest force's cell) first; then lower the timestep (0.01)");
   minimizer_case(
       "FireNphEnergyNotFinite", "an energy of inf (fix addforce energy), at fixed box",
       []() {

@@ -546,7 +546,8 @@ TEST_F(BadInput3d, StylesAndState)
           {"set atom 5 d_v0 0\nrun 0 post no", "vertex 5 has v0 = 0"},
           {"set atom 5 d_v0 2\nrun 0 post no", "different v0"},
           {"set atom 5 d_sigma -1\nrun 0 post no", "vertex 5 has sigma = -1"},
-          {"set group all d_v0 1e-200\nrun 0 post no", "is not finite"},
+          {"set group all d_v0 1e-200\nrun 0 post no",
+           "has v0 = 1e-200 for a volume of 2.5361507: its volume term (V/V0 - 1)^2 is not finite"},
           {"set atom 1 i2_edge[1] 0\nrun 0 post no", "sets of preferred values"},
           {"set atom 1 d2_edge_l0[1] 0\nrun 0 post no", "l0 = 0"},
       });

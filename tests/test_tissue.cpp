@@ -106,3 +106,31 @@ TEST(VertexObservables, RegularPolygonFromMoleculeTemplate)
   EXPECT_NEAR(s.thermo("f_cells[2]"), 1.0, 1e-12);
   EXPECT_EQ(s.thermo("c_next_error"), 0.0) << "column 3 names the next vertex along the ring";
 }
+
+// Molecule IDs far above the cell count (10000 + k, beyond 4 n + 1024) take the hub's sparse
+// molecule -> cell index; every cell must still be found: the same energy, pressure and tissue
+// observables as with the original IDs 1..16, at the start and after 50 iterations.
+TEST(TissueObservables, SparseMoleculeIdsGiveTheSameTissue)
+{
+  auto observe = [](const std::string &renumber) {
+    LammpsSession s;
+    s.run(tissue16_commands() + renumber +
+          "compute tissue all dpoly/tissue\n"
+          "thermo_style custom step pe press lx c_tissue[*]\nrun 0 post no");
+    std::vector<double> values;
+    auto record = [&]() {
+      for (const char *name : {"pe", "press", "lx"}) values.push_back(s.thermo(name));
+      for (int k = 1; k <= 6; k++) values.push_back(s.thermo("c_tissue[" + std::to_string(k) + "]"));
+    };
+    record();
+    s.run("minimize 0.0 1.0e-8 50 500");
+    record();
+    return values;
+  };
+  const std::vector<double> dense = observe("");
+  const std::vector<double> sparse =
+      observe("variable sparse_mol atom mol+10000\nset group all mol v_sparse_mol\n");
+  ASSERT_EQ(dense.size(), sparse.size());
+  for (size_t k = 0; k < dense.size(); k++)
+    EXPECT_NEAR(sparse[k], dense[k], 1e-12 * std::fabs(dense[k]) + 1e-15) << "value " << k;
+}

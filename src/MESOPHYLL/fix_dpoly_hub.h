@@ -94,7 +94,9 @@ class FixDPolyHub : public Fix, public DPoly::CellHub {
   virtual void check_measured_cells() = 0;
   // after each stage that acted after a run, with its FixDPolyStage::Change flags
   virtual void after_stage(int /*change*/) {}
-  // the hub itself if it keeps polygons (the stages that act on polygons only use it)
+  // the hub itself if it keeps polygons (the stages that act on polygons only use it); virtual,
+  // as a dynamic_cast in FixDPolyStage::attach_all would make fix_dpoly_stage.cpp include
+  // fix_dpoly_cells.h, which includes fix_dpoly_stage.h: an include cycle
   virtual class FixDPolyCells *polygons() { return nullptr; }
 
   std::vector<class FixDPolyStage *> find_stages();

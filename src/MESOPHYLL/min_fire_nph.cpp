@@ -540,8 +540,10 @@ void MinFireNph::record_stall_uphill(const Power &power)
                         "at that step size ran into min_modify dmax: a force changes faster than "
                         "even that step resolves (a very stiff or non-smooth term, as after a "
                         "change of the system too large for one minimization, e.g. a large "
-                        "growth step); lower the timestep ({}) or make the change in smaller "
-                        "steps",
+                        "growth step). A collapsed ring or face or a tangled state stays so at "
+                        "any timestep: run fix dpoly/check (or look at the largest force's "
+                        "cell) first; then lower the timestep ({}) or make the change in "
+                        "smaller steps",
                         stall.atoms_uphill, stall.atoms_at_dmax, stall.drifts, update->dt);
   error->all(FLERR,
              "min_style fire/nph: at step {} (iteration {} of this minimization) FIRE has turned "
