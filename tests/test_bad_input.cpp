@@ -212,9 +212,11 @@ const char *MINIMIZE_TISSUE = "minimize 0.0 1.0e-10 20000 200000\n";    // tissu
 
 // Segment 5-6 of the stretched tissue (3.8 long, l0 raised to 6) grows past half the box (4)
 // during a minimization; the communication cutoff (4.5) holds every image of its vertices.
-std::string segment_outgrows_half_box()
+// stretched_tissue_along_y(3.8) gives the same along y.
+std::string segment_outgrows_half_box(const Tissue &t = stretched_tissue(3.8),
+                                      const std::string &name = "bad_input_stretched.data")
 {
-  return on_tissue(write_tissue(stretched_tissue(3.8), "bad_input_stretched.data"),
+  return on_tissue(write_tissue(t, name),
                    "comm_modify cutoff 4.5\nset atom 5 d_l0 6.0\nmin_style fire\n"
                    "minimize 0.0 1.0e-8 5000 50000\n");
 }
@@ -818,9 +820,7 @@ TEST(BadInputDuringRun, SegmentPastHalfTheBoxIsSeenWithoutReneighbouring)
 TEST(BadInputDuringRun, SegmentPastHalfTheBoxInYIsSeenWithoutReneighbouring)
 {
   const std::string input =
-      on_tissue(write_tissue(stretched_tissue_along_y(3.8), "bad_input_stretched_y.data"),
-                "comm_modify cutoff 4.5\nset atom 5 d_l0 6.0\nmin_style fire\n"
-                "minimize 0.0 1.0e-8 5000 50000\n");
+      segment_outgrows_half_box(stretched_tissue_along_y(3.8), "bad_input_stretched_y.data");
   LammpsSession default_skin, large_skin;
   const std::string error = without_location(default_skin.try_run(input));
   EXPECT_THAT(error, HasSubstr("ring segment 5-6 of cell 2 is "));
