@@ -71,6 +71,9 @@ namespace {
 struct RunRecord {
   long iterations = -1, uphill = -1, atoms_uphill = -1, box_uphill = -1, lammps_iterations = -2;
   double mean_dt = -1.0, dtmax = -1.0;
+  long caps_lowered = 0;    // min_modify tmaxadapt: times the cap was lowered, and to what
+  double lowered_cap = -1.0;
+  bool converged = false;    // LAMMPS's stopping criterion was the force tolerance
 };
 
 RunRecord run_record(const std::string &log)
@@ -82,18 +85,27 @@ RunRecord run_record(const std::string &log)
            "  fire/nph: %ld iterations, %ld uphill (velocities zeroed; the atoms' power negative "
            "in %ld, the box's in %ld), mean time step %lf (tmax x timestep = %lf)",
            &r.iterations, &r.uphill, &r.atoms_uphill, &r.box_uphill, &r.mean_dt, &r.dtmax);
+    const size_t lowered = line.find(", lowered ");
+    if (line.rfind("  fire/nph: ", 0) == 0 && lowered != std::string::npos)
+      sscanf(line.c_str() + lowered, ", lowered %ld times to %lf by tmaxadapt)", &r.caps_lowered,
+             &r.lowered_cap);
     sscanf(line.c_str(), "  Iterations, force evaluations = %ld", &r.lammps_iterations);
+    if (line.find("Stopping criterion = force tolerance") != std::string::npos)
+      r.converged = true;
   }
   return r;
 }
 
-RunRecord minimize_with_timestep(const std::string &name, const std::string &timestep)
+// min_modify tmaxadapt as given ("yes" or "no"), at most maxiter iterations
+RunRecord minimize_with_timestep(const std::string &name, const std::string &timestep,
+                                 const std::string &tmaxadapt = "no", int maxiter = 2000)
 {
   const std::string log = scratch(name);
   {
     LammpsSession s;
     s.run("log " + log + "\n" + tissue16_commands() + "timestep " + timestep +
-          "\nminimize 0.0 1.0e-10 2000 20000\n");
+          "\nmin_modify tmaxadapt " + tmaxadapt + "\nminimize 0.0 1.0e-10 " +
+          std::to_string(maxiter) + " " + std::to_string(10 * maxiter) + "\n");
   }
   MPI_Barrier(MPI_COMM_WORLD);
   return run_record(log);
@@ -128,4 +140,41 @@ TEST(FireNph, LogsUphillStepsAndMeanTimeStep)
   EXPECT_GT(beyond.uphill * 40, beyond.iterations) << beyond.uphill << " of " << beyond.iterations;
   EXPECT_GT(beyond.atoms_uphill * 2, beyond.uphill);
   EXPECT_LT(beyond.mean_dt, 0.5 * beyond.dtmax);
+}
+
+// min_modify tmaxadapt yes: where FIRE keeps restarting from rest far below its cap,
+// the cap comes down until it does not; where it converges normally, nothing changes. Below the
+// 16-cell tissue's limit (cap 0.05) the minimization is the same, iteration for iteration, as
+// without it; beyond (cap 0.15) the cap is lowered below the stable step (about 0.09) and the
+// minimization converges where without it FIRE crawls to the iteration limit.
+TEST(FireNph, TmaxAdaptLowersTheCapOnlyWhereFireKeepsRestarting)
+{
+  const RunRecord below_fixed =
+      minimize_with_timestep("fire_nph_adapt_below_fixed.log", "0.01", "no");
+  const RunRecord below = minimize_with_timestep("fire_nph_adapt_below.log", "0.01", "yes");
+  ASSERT_GT(below.iterations, 0) << "no fire/nph line in the log";
+  EXPECT_TRUE(below.converged);
+  EXPECT_EQ(below.caps_lowered, 0);
+  EXPECT_EQ(below.iterations, below_fixed.iterations);
+  EXPECT_EQ(below.uphill, below_fixed.uphill);
+  EXPECT_DOUBLE_EQ(below.mean_dt, below_fixed.mean_dt);
+
+  // seen on 1 rank: without tmaxadapt 15949 iterations (857 uphill, mean step 0.025); with it
+  // 3527 (138 uphill), the cap lowered 5 times to 0.049
+  const int maxiter = 8000;
+  const RunRecord fixed =
+      minimize_with_timestep("fire_nph_adapt_beyond_fixed.log", "0.03", "no", maxiter);
+  const RunRecord adapted =
+      minimize_with_timestep("fire_nph_adapt_beyond.log", "0.03", "yes", maxiter);
+  ASSERT_GT(adapted.iterations, 0) << "no fire/nph line in the log";
+  EXPECT_FALSE(fixed.converged) << "without tmaxadapt: " << fixed.iterations << " iterations";
+  EXPECT_EQ(fixed.caps_lowered, 0);
+  EXPECT_TRUE(adapted.converged) << adapted.iterations << " iterations, cap lowered "
+                                 << adapted.caps_lowered << " times to " << adapted.lowered_cap;
+  ASSERT_GE(adapted.caps_lowered, 1);
+  EXPECT_DOUBLE_EQ(adapted.dtmax, 0.15);    // the line names the cap it started from
+  const double expected = 0.15 * std::pow(0.8, adapted.caps_lowered);
+  EXPECT_NEAR(adapted.lowered_cap, expected, 1.0e-3 * expected);    // printed to 4 digits
+  EXPECT_LT(adapted.lowered_cap, 0.09);
+  EXPECT_GT(adapted.lowered_cap, 0.03);    // never below the timestep
 }

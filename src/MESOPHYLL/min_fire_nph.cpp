@@ -33,10 +33,23 @@ static constexpr bigint STALL_UPHILL_STEPS = 1000;
 // change is a box that collapses or runs away, not a relaxation (vmax already bounds one step)
 static constexpr double BOX_CHANGE_LIMIT = 4.0;
 
+// min_modify tmaxadapt: a FIRE whose step cap tmax x timestep lies above what its stiffest mode
+// allows turns uphill every few dozen iterations and spends most of its time far below the cap
+// (after vertex insertion split a segment twice: 1 uphill step in 19 iterations, mean step 0.35
+// of the cap); a converging FIRE turns uphill once in hundreds, at steps near the cap. Judged
+// over each window of CAP_WINDOW iterations: more than one uphill step in CAP_UPHILL_SPACING and
+// a mean step below CAP_MEAN_FRACTION of the cap lower the cap by CAP_LOWERING, never below the
+// timestep. The cap stays lowered until the minimization ends.
+static constexpr bigint CAP_WINDOW = 500;
+static constexpr bigint CAP_UPHILL_SPACING = 50;
+static constexpr double CAP_MEAN_FRACTION = 0.5;
+static constexpr double CAP_LOWERING = 0.8;
+
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
-    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), velocity(nullptr),
+    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), adapt_cap(false),
+    velocity(nullptr),
     box_length(nullptr), box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
 {
   // Min::setup() refuses fix box/relax with damped dynamics because FIRE and quickmin ignore
@@ -80,6 +93,11 @@ int MinFireNph::modify_param(int narg, char **arg)
     rms_tolerance = utils::logical(FLERR, arg[1], false, lmp) == 1;
     return 2;
   }
+  if (strcmp(arg[0], "tmaxadapt") == 0) {
+    if (narg < 2) utils::missing_cmd_args(FLERR, "min_modify tmaxadapt", error);
+    adapt_cap = utils::logical(FLERR, arg[1], false, lmp) == 1;
+    return 2;
+  }
   return 0;
 }
 
@@ -108,6 +126,7 @@ void MinFireNph::init()
   last_negative = update->ntimestep;
   stall = StallRecord();
   run_record = RunRecord();
+  cap_window = CapWindow();
 }
 
 /* ----------------------------------------------------------------------
@@ -164,11 +183,11 @@ void MinFireNph::setup_style()
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "  Parameters for fire/nph: dmax {} delaystep {} dtgrow {} dtshrink {} "
-                   "alpha0 {} alphashrink {} tmax {} tmin {} halfstepback {} box dof {} "
-                   "boxmass {} steer {} rms {}\n",
+                   "alpha0 {} alphashrink {} tmax {} tmin {} tmaxadapt {} halfstepback {} "
+                   "box dof {} boxmass {} steer {} rms {}\n",
                    dmax, delaystep, dtgrow, dtshrink, alpha0, alphashrink, tmax, tmin,
-                   halfstepback_flag ? "yes" : "no", nextra_global, boxmass_scale,
-                   steer_by_mass ? "mass" : "force", rms_tolerance ? "yes" : "no");
+                   adapt_cap ? "yes" : "no", halfstepback_flag ? "yes" : "no", nextra_global,
+                   boxmass_scale, steer_by_mass ? "mass" : "force", rms_tolerance ? "yes" : "no");
 }
 
 /* ----------------------------------------------------------------------
@@ -335,10 +354,7 @@ int MinFireNph::iterate(int maxiter)
   const double ftm2v = force->ftm2v;
 
   for (int iter = 0; iter < maxiter; iter++) {
-    if (timer->check_timeout(niter)) {
-      log_run_record();
-      return TIMEOUT;
-    }
+    if (timer->check_timeout(niter)) return TIMEOUT;
     const bigint ntimestep = ++update->ntimestep;
     niter++;
 
@@ -353,6 +369,7 @@ int MinFireNph::iterate(int maxiter)
       if (dt > dtmin && dt >= std::min(update->dt, dtmax)) stall = StallRecord();
     } else {
       run_record.uphill++;
+      cap_window.uphill++;
       if (power.atoms < 0.0) run_record.atoms_uphill++;
       if (power.box < 0.0) run_record.box_uphill++;
       last_negative = ntimestep;
@@ -369,6 +386,9 @@ int MinFireNph::iterate(int maxiter)
 
     run_record.steps++;
     run_record.dt_sum += dt;
+    cap_window.steps++;
+    cap_window.dt_sum += dt;
+    if (adapt_cap && cap_window.steps == CAP_WINDOW) judge_step_cap();
 
     // semi-implicit Euler: kick with the current forces, steer, then drift
     for (int i = 0; i < nvec; i++) velocity[i] += dt * ftm2v * fvec[i] / atom_mass(i / 3);
@@ -388,10 +408,8 @@ int MinFireNph::iterate(int maxiter)
 
     if (update->etol > 0.0 && ntimestep - last_negative > delaystep &&
         fabs(ecurrent - eprevious) <
-            update->etol * 0.5 * (fabs(ecurrent) + fabs(eprevious) + EPS_ENERGY)) {
-      log_run_record();
+            update->etol * 0.5 * (fabs(ecurrent) + fabs(eprevious) + EPS_ENERGY))
       return ETOL;
-    }
 
     if (update->ftol > 0.0) {
       double fdotf;
@@ -403,10 +421,7 @@ int MinFireNph::iterate(int maxiter)
         fdotf = fnorm_inf();
       else
         fdotf = fnorm_sqr();
-      if (fdotf < update->ftol * update->ftol) {
-        log_run_record();
-        return FTOL;
-      }
+      if (fdotf < update->ftol * update->ftol) return FTOL;
     }
 
     if (output->next == ntimestep) {
@@ -415,19 +430,45 @@ int MinFireNph::iterate(int maxiter)
       timer->stamp(Timer::OUTPUT);
     }
   }
-  log_run_record();
   return MAXITER;
+}
+
+// the run record goes after the thermo table, whose last line Min::run() writes after iterate()
+void MinFireNph::run(int n)
+{
+  Min::run(n);
+  log_run_record();
+}
+
+/* ----------------------------------------------------------------------
+   min_modify tmaxadapt: at the end of each window, lower the step cap if FIRE kept restarting
+   from rest at steps far below it (see CAP_WINDOW); the sums are the same on every rank
+------------------------------------------------------------------------- */
+
+void MinFireNph::judge_step_cap()
+{
+  const bool restarting = cap_window.uphill * CAP_UPHILL_SPACING > cap_window.steps;
+  const bool far_below_cap = cap_window.dt_sum < CAP_MEAN_FRACTION * dtmax * cap_window.steps;
+  const double lowered = std::max(CAP_LOWERING * dtmax, update->dt);
+  if (restarting && far_below_cap && lowered < dtmax) {
+    dtmax = lowered;
+    dt = std::min(dt, dtmax);
+    run_record.caps_lowered++;
+  }
+  cap_window = CapWindow();
 }
 
 void MinFireNph::log_run_record() const
 {
   if (comm->me != 0 || run_record.steps == 0) return;
+  std::string cap = fmt::format("tmax x timestep = {:.4g}", tmax * update->dt);
+  if (run_record.caps_lowered)
+    cap += fmt::format(", lowered {} times to {:.4g} by tmaxadapt", run_record.caps_lowered, dtmax);
   utils::logmesg(lmp,
                  "  fire/nph: {} iterations, {} uphill (velocities zeroed; the atoms' power "
-                 "negative in {}, the box's in {}), mean time step {:.4g} (tmax x timestep = "
-                 "{:.4g})\n",
+                 "negative in {}, the box's in {}), mean time step {:.4g} ({})\n",
                  run_record.steps, run_record.uphill, run_record.atoms_uphill,
-                 run_record.box_uphill, run_record.dt_sum / (double) run_record.steps, dtmax);
+                 run_record.box_uphill, run_record.dt_sum / (double) run_record.steps, cap);
 }
 
 /* ----------------------------------------------------------------------

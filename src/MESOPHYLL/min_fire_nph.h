@@ -31,12 +31,14 @@ class MinFireNph : public Min {
   void setup_style() override;
   void reset_vectors() override;
   int iterate(int) override;
+  void run(int) override;
   int modify_param(int, char **) override;
 
  private:
   double boxmass_scale;    // box mass relative to that of an affine dilation
   bool steer_by_mass;      // FIRE's steering in mass-weighted coordinates (min_modify steer mass)
   bool rms_tolerance;      // ftol bounds the force per degree of freedom (min_modify rms yes)
+  bool adapt_cap;          // lower the step cap when FIRE keeps restarting (min_modify tmaxadapt)
 
   double dt, dtmax, dtmin, alpha;
   double last_drift_time;    // time of the last drift, after dmax and vmax shortened it
@@ -69,8 +71,17 @@ class MinFireNph : public Min {
     bigint atoms_uphill;   // ... in which the atoms' own power was negative
     bigint box_uphill;     // ... in which the box's own power was negative
     double dt_sum;         // sum of FIRE's time step over the iterations
+    int caps_lowered;      // times the step cap was lowered (min_modify tmaxadapt)
   } run_record;
   void log_run_record() const;
+
+  // the iterations since the step cap was last judged, for min_modify tmaxadapt
+  struct CapWindow {
+    bigint steps;
+    bigint uphill;
+    double dt_sum;
+  } cap_window;
+  void judge_step_cap();
 
   struct Power {
     double total, atoms, box;
