@@ -13,35 +13,25 @@
 3. where the residual force sits: the atoms with the largest force, their cell and the part of
    their force from each term (forces.<term>.dump: the force without a term, subtracted from the
    force with all; the area term is what is left), and the squared force per cell.
-Standard library only.
+Standard library only (and tests/regression.py's reader of thermo tables).
 """
 import argparse
 import math
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests"))
+import regression    # noqa: E402  (its reader of LAMMPS's thermo tables)
 
 TERMS = ("segment", "adhesion", "bending", "contact")
 
 
 def thermo_rows(log):
     """The thermo rows of the first minimization in the log: dicts by column name."""
-    rows, header = [], None
-    for line in open(log, errors="replace"):
-        words = line.split()
-        if words[:2] == ["Step", "PotEng"]:
-            if header is not None:
-                break
-            header = words
-            continue
-        if header and words and re.fullmatch(r"\d+", words[0]) and len(words) == len(header):
-            try:
-                rows.append(dict(zip(header, map(float, words))))
-            except ValueError:
-                pass
-        elif header and rows and line.startswith("Loop time"):
-            break
-    return rows
+    for columns, rows in regression.thermo_blocks(log):
+        if columns[:2] == ["Step", "PotEng"]:
+            return [dict(zip(columns, row)) for row in rows]
+    return []
 
 
 def read_dump(path):
@@ -91,10 +81,13 @@ def slow_mode(path):
     (s1, a), (s2, b) = shots[k], shots[k + 1]
     common = [i for i in b if i in a]
     d = {i: (b[i][1] - a[i][1], b[i][2] - a[i][2]) for i in common}
+    whole = sum(v[0] ** 2 + v[1] ** 2 for v in d.values())
+    if whole == 0.0:
+        print(f"\nslowest mode: no vertex moved between steps {s1} and {s2}")
+        return
     # the whole tissue's translation costs nothing and is no mode of the force: taken out
     mx = sum(v[0] for v in d.values()) / len(d)
     my = sum(v[1] for v in d.values()) / len(d)
-    whole = sum(v[0] ** 2 + v[1] ** 2 for v in d.values())
     d = {i: (v[0] - mx, v[1] - my) for i, v in d.items()}
     total = sum(dx * dx + dy * dy for dx, dy in d.values())
     print(f"\nslowest mode: positions at step {s2} minus step {s1}: the whole tissue moved "
