@@ -4,6 +4,7 @@
 
 #include "gtest/gtest.h"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -74,13 +75,32 @@ struct RunRecord {
   long caps_lowered = 0;    // min_modify tmaxadapt: times the cap was lowered, and to what
   double lowered_cap = -1.0;
   bool converged = false;    // LAMMPS's stopping criterion was the force tolerance
+  // the record's place: how many such lines, and whether the last lies after the thermo table's
+  // last row and before "Loop time"
+  int records = 0;
+  bool after_table = false;
 };
 
 RunRecord run_record(const std::string &log)
 {
   std::ifstream in(log);
   RunRecord r;
+  bool in_table = false, row_since_record = false;
   for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (first == "Step") in_table = true;
+    if (first == "Loop") {
+      in_table = false;
+      r.after_table = r.records > 0 && !row_since_record;
+    }
+    if (in_table && !first.empty() && std::isdigit(static_cast<unsigned char>(first[0])))
+      row_since_record = true;
+    if (line.rfind("  fire/nph: ", 0) == 0) {
+      r.records++;
+      row_since_record = false;
+    }
     sscanf(line.c_str(),
            "  fire/nph: %ld iterations, %ld uphill (velocities zeroed; the atoms' power negative "
            "in %ld, the box's in %ld), mean time step %lf (tmax x timestep = %lf)",
@@ -124,6 +144,8 @@ TEST(FireNph, LogsUphillStepsAndMeanTimeStep)
   const RunRecord beyond = minimize_with_timestep("fire_nph_record_beyond.log", "0.03");
   for (const RunRecord &r : {below, beyond}) {
     ASSERT_GT(r.iterations, 0) << "no fire/nph line in the log";
+    EXPECT_EQ(r.records, 1);
+    EXPECT_TRUE(r.after_table) << "the record must follow the thermo table's last row";
     EXPECT_EQ(r.iterations, r.lammps_iterations);
     EXPECT_LE(r.atoms_uphill, r.uphill);
     EXPECT_LE(r.box_uphill, r.uphill);
@@ -152,7 +174,7 @@ TEST(FireNph, TmaxAdaptLowersTheCapOnlyWhereFireKeepsRestarting)
   const RunRecord below_fixed =
       minimize_with_timestep("fire_nph_adapt_below_fixed.log", "0.01", "no");
   const RunRecord below = minimize_with_timestep("fire_nph_adapt_below.log", "0.01", "yes");
-  ASSERT_GT(below.iterations, 0) << "no fire/nph line in the log";
+  ASSERT_GT(below.iterations, 1000) << "the case needs windows of 500 iterations to judge";
   EXPECT_TRUE(below.converged);
   EXPECT_EQ(below.caps_lowered, 0);
   EXPECT_EQ(below.iterations, below_fixed.iterations);
@@ -176,5 +198,15 @@ TEST(FireNph, TmaxAdaptLowersTheCapOnlyWhereFireKeepsRestarting)
   const double expected = 0.15 * std::pow(0.8, adapted.caps_lowered);
   EXPECT_NEAR(adapted.lowered_cap, expected, 1.0e-3 * expected);    // printed to 4 digits
   EXPECT_LT(adapted.lowered_cap, 0.09);
-  EXPECT_GT(adapted.lowered_cap, 0.03);    // never below the timestep
+}
+
+// The floor: with the timestep 0.08, itself near the stable step, and the cap 5 x 0.08 = 0.4, the
+// cap comes down by 0.8 per window to 0.4 x 0.8^7 = 0.084, then to the timestep, and stays there.
+TEST(FireNph, TmaxAdaptStopsAtTheTimestep)
+{
+  const RunRecord r = minimize_with_timestep("fire_nph_adapt_floor.log", "0.08", "yes", 8000);
+  ASSERT_GT(r.iterations, 0) << "no fire/nph line in the log";
+  EXPECT_DOUBLE_EQ(r.dtmax, 0.4);
+  EXPECT_EQ(r.caps_lowered, 8);
+  EXPECT_DOUBLE_EQ(r.lowered_cap, 0.08);
 }

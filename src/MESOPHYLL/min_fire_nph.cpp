@@ -39,7 +39,7 @@ static constexpr double BOX_CHANGE_LIMIT = 4.0;
 // of the cap); a converging FIRE turns uphill once in hundreds, at steps near the cap. Judged
 // over each window of CAP_WINDOW iterations: more than one uphill step in CAP_UPHILL_SPACING and
 // a mean step below CAP_MEAN_FRACTION of the cap lower the cap by CAP_LOWERING, never below the
-// timestep. The cap stays lowered until the minimization ends.
+// timestep (nor tmin x timestep). The cap stays lowered until the minimization ends.
 static constexpr bigint CAP_WINDOW = 500;
 static constexpr bigint CAP_UPHILL_SPACING = 50;
 static constexpr double CAP_MEAN_FRACTION = 0.5;
@@ -48,8 +48,8 @@ static constexpr double CAP_LOWERING = 0.8;
 /* ---------------------------------------------------------------------- */
 
 MinFireNph::MinFireNph(LAMMPS *lmp) :
-    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false), adapt_cap(false),
-    velocity(nullptr),
+    Min(lmp), boxmass_scale(1.0), steer_by_mass(false), rms_tolerance(false),
+    adapt_cap(false), velocity(nullptr),
     box_length(nullptr), box_mass(nullptr), box_velocity(nullptr), box_step(nullptr)
 {
   // Min::setup() refuses fix box/relax with damped dynamics because FIRE and quickmin ignore
@@ -117,7 +117,12 @@ void MinFireNph::init()
                "min_style fire/nph: min_modify rms yes is a root mean square, which needs "
                "min_modify norm two, not norm {}",
                normstyle == MAX ? "max" : "inf");
+}
 
+// FIRE's state at the start of a minimization: at every Min::setup(), so that callers that set
+// up and run several minimizations after one init() (prd, tad, hyper) start each afresh too
+void MinFireNph::start_afresh()
+{
   dt = update->dt;
   dtmax = tmax * dt;
   dtmin = tmin * dt;
@@ -135,6 +140,7 @@ void MinFireNph::init()
 
 void MinFireNph::setup_style()
 {
+  start_afresh();
   fix_minimize->add_vector(3);
 
   if (nextra_atom) error->all(FLERR, "min_style fire/nph does not support per-atom extra dof");
@@ -449,7 +455,7 @@ void MinFireNph::judge_step_cap()
 {
   const bool restarting = cap_window.uphill * CAP_UPHILL_SPACING > cap_window.steps;
   const bool far_below_cap = cap_window.dt_sum < CAP_MEAN_FRACTION * dtmax * cap_window.steps;
-  const double lowered = std::max(CAP_LOWERING * dtmax, update->dt);
+  const double lowered = std::max({CAP_LOWERING * dtmax, update->dt, dtmin});
   if (restarting && far_below_cap && lowered < dtmax) {
     dtmax = lowered;
     dt = std::min(dt, dtmax);
@@ -479,9 +485,11 @@ void MinFireNph::log_run_record() const
 // the settings that bound FIRE's steps, for the messages
 std::string MinFireNph::what_to_change() const
 {
-  std::string advice = fmt::format("lower the timestep ({}; FIRE's steps grow to tmax x timestep = "
-                                   "{}) or min_modify dmax ({})",
-                                   update->dt, dtmax, dmax);
+  std::string cap = fmt::format("tmax x timestep = {}", tmax * update->dt);
+  if (run_record.caps_lowered) cap = fmt::format("{}, lowered by tmaxadapt from {}", dtmax, cap);
+  std::string advice = fmt::format("lower the timestep ({}; FIRE's steps grow to {}) or "
+                                   "min_modify dmax ({})",
+                                   update->dt, cap, dmax);
   if (nextra_global)
     advice += fmt::format("; for the box: raise min_modify boxmass ({}), lower fix box/relax's "
                           "vmax, or check its target pressure",

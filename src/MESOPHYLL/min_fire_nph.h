@@ -92,6 +92,7 @@ class MinFireNph : public Min {
     bool box_limited;      // the box would have moved beyond dmax or vmax in dt
   };
 
+  void start_afresh();
   double global_sum(double) const;
   Power vdotf() const;
   double rms_force_sqr() const;
