@@ -97,7 +97,10 @@ def kill_when_restarted(args, folder):
                 if os.path.exists(os.path.join(folder, "runs", r, "finished"))]
         for run in runs_of(folder):
             path = os.path.join(folder, "runs", run)
+            # caught inside its last growth step (restart.N16.2 not yet written), not in the
+            # instant between its last restart file and its marker: the kill must land first
             if done and os.path.exists(os.path.join(path, "restart.N16.1")) and \
+                    not os.path.exists(os.path.join(path, "restart.N16.2")) and \
                     not os.path.exists(os.path.join(path, "finished")):
                 caught = run
                 break
