@@ -131,7 +131,7 @@ void MinFireNph::start_afresh()
   last_negative = update->ntimestep;
   stall = StallRecord();
   run_record = RunRecord();
-  cap_window = CapWindow();
+  cap_window_start = run_record;
 }
 
 /* ----------------------------------------------------------------------
@@ -375,7 +375,6 @@ int MinFireNph::iterate(int maxiter)
       if (dt > dtmin && dt >= std::min(update->dt, dtmax)) stall = StallRecord();
     } else {
       run_record.uphill++;
-      cap_window.uphill++;
       if (power.atoms < 0.0) run_record.atoms_uphill++;
       if (power.box < 0.0) run_record.box_uphill++;
       last_negative = ntimestep;
@@ -392,9 +391,7 @@ int MinFireNph::iterate(int maxiter)
 
     run_record.steps++;
     run_record.dt_sum += dt;
-    cap_window.steps++;
-    cap_window.dt_sum += dt;
-    if (adapt_cap && cap_window.steps == CAP_WINDOW) judge_step_cap();
+    if (adapt_cap && run_record.steps - cap_window_start.steps == CAP_WINDOW) judge_step_cap();
 
     // semi-implicit Euler: kick with the current forces, steer, then drift
     for (int i = 0; i < nvec; i++) velocity[i] += dt * ftm2v * fvec[i] / atom_mass(i / 3);
@@ -453,15 +450,18 @@ void MinFireNph::run(int n)
 
 void MinFireNph::judge_step_cap()
 {
-  const bool restarting = cap_window.uphill * CAP_UPHILL_SPACING > cap_window.steps;
-  const bool far_below_cap = cap_window.dt_sum < CAP_MEAN_FRACTION * dtmax * cap_window.steps;
+  const bigint steps = run_record.steps - cap_window_start.steps;
+  const bigint uphill = run_record.uphill - cap_window_start.uphill;
+  const double dt_sum = run_record.dt_sum - cap_window_start.dt_sum;
+  const bool restarting = uphill * CAP_UPHILL_SPACING > steps;
+  const bool far_below_cap = dt_sum < CAP_MEAN_FRACTION * dtmax * steps;
   const double lowered = std::max({CAP_LOWERING * dtmax, update->dt, dtmin});
   if (restarting && far_below_cap && lowered < dtmax) {
     dtmax = lowered;
     dt = std::min(dt, dtmax);
     run_record.caps_lowered++;
   }
-  cap_window = CapWindow();
+  cap_window_start = run_record;
 }
 
 void MinFireNph::log_run_record() const

@@ -75,12 +75,8 @@ class MinFireNph : public Min {
   } run_record;
   void log_run_record() const;
 
-  // the iterations since the step cap was last judged, for min_modify tmaxadapt
-  struct CapWindow {
-    bigint steps;
-    bigint uphill;
-    double dt_sum;
-  } cap_window;
+  // the run record when the step cap was last judged (min_modify tmaxadapt judges the window since)
+  RunRecord cap_window_start;
   void judge_step_cap();
 
   struct Power {
