@@ -25,7 +25,13 @@ a copy of a validation.md. Checks, against means and standard errors computed he
     difference resolved", never "holds", and a point with too few runs is not counted as
     compared;
   * the section is replaced in place: a second report leaves one section, and the text around
-    it (and a section of tools/validate.py --published) unchanged.
+    it (and a section of tools/validate.py --published) unchanged;
+  * archives: the report read back from the CSVs a report archived (OUT/<name>_summary.csv)
+    gives the same directions, tables, costs and withdrawn runs as the report of the folders,
+    borrowing included; an archive whose sweep file now plans other runs is refused; a base
+    point is borrowed only where tmaxadapt agrees (unset reads as the protocol's 'no');
+  * bad input: no sweep, a folder without runs, a file that is not <name>_summary.csv, a
+    missing archive.
 Exit 77 (skipped) without python3-matplotlib, which the figures need.
 """
 import csv
@@ -198,6 +204,65 @@ def check_verdict_rules():
            f"near-optimal without a resolved difference: {optimal}")
 
 
+def section_after(text, heading):
+    """The generated section from heading on (the opening names the command and sources)."""
+    body = text[text.find("<!-- sweeps"):text.find("<!-- /sweeps -->")]
+    return body[body.find(heading):] if heading in body else ""
+
+
+def report(args, doc, out, sweeps=None):
+    command = [sys.executable, REPORT] + args + ["--out", out, "--doc", doc]
+    result = subprocess.run(command + (["--sweeps", sweeps] if sweeps else []),
+                            capture_output=True, text=True)
+    return result, open(doc).read()
+
+
+def check_archives(scratch, fig6, from_folders_of, out):
+    """A report from the CSVs a report archived reads what the report from the folders read
+    (from_folders_of: {Fig 5 sweep name: the document its report with fig6 wrote}): the same
+    directions, tables, costs and withdrawn runs (borrowing included, with the runs' variables
+    from the plan of the sweep files); an archive the sweep file no longer plans is refused;
+    tmaxadapt must agree for a base point to be borrowed (unset reads 'no')."""
+    doc = os.path.join(scratch, "doc", "validation.md")
+    archive = lambda name: os.path.join(out, f"{name}_summary.csv")  # noqa: E731
+    for name, from_folders in from_folders_of.items():
+        result, from_archives = report(["--fig6", archive("fig6_t"), "--fig5", archive(name)],
+                                       doc, out, scratch)
+        expect(result.returncode == 0, f"report of the archives: {result.stderr}")
+        folders_part = section_after(from_folders, "### Directions of the paper")
+        expect(folders_part and folders_part == section_after(from_archives,
+                                                              "### Directions of the paper"),
+               f"{name}: the report of the archives differs from that of the folders")
+        expect(f"{name} and fig6_t read back from the summaries" in from_archives,
+               f"{name}: the section does not say that its sweeps came from archives")
+    expect("Withdrawn: run 1 of fig5_cap" in from_archives and
+           os.path.exists(os.path.join(out, "fig5_cap_withdrawn.csv")),
+           "the archive of fig5_cap lost its withdrawn run")
+    # the sweep file changed since (two seeds, not three): its archive is refused
+    changed = os.path.join(scratch, "changed")
+    os.makedirs(changed)
+    text = open(os.path.join(scratch, "fig5_t.sweep")).read()
+    with open(os.path.join(changed, "fig5_t.sweep"), "w") as f:
+        f.write(text.replace("seeds 1 2 3", "seeds 1 2"))
+    shutil.copy(os.path.join(scratch, "fig6_t.sweep"), changed)
+    result, _ = report(["--fig6", archive("fig6_t"), "--fig5", archive("fig5_t")], doc, out,
+                       changed)
+    expect(result.returncode != 0 and "is not the sweep" in result.stderr,
+           f"an archive of another plan was read: exit {result.returncode}, {result.stderr}")
+    # tmaxadapt: 'no' as a fixed value borrows from runs that leave it unset; 'yes' does not
+    for value, borrows in (("no", True), ("yes", False)):
+        folder = plan(scratch, f"fig5_adapt_{value}", "fig5.mesophyll",
+                      ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
+                      f"steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11 tmaxadapt {value}")
+        fake_results(folder)
+        result, text = report(["--fig6", fig6, "--fig5", folder], doc, out)
+        borrowed = f"fig5_adapt_{value}'s base point" in text
+        refused = "differ in tmaxadapt: none borrowed" in text
+        expect(result.returncode == 0 and borrowed == borrows and refused != borrows,
+               f"tmaxadapt {value}: borrowed {borrowed}, refused {refused}, expected "
+               f"borrowed {borrows}: {result.stderr}")
+
+
 def main():
     check_verdict_rules()
     os.environ["MESOPHYLL_MISSING_EXIT"] = "77"    # sweep_plot.py without matplotlib: skip
@@ -237,7 +302,7 @@ def main():
                 return 77
             expect(result.returncode == 0, f"report {attempt}: exit code {result.returncode}: "
                                            f"{result.stdout}{result.stderr}")
-        text = open(doc).read()
+        text = from_fig5 = open(doc).read()
         expect(text.startswith(head), "the text before the section changed")
         expect(text.find("<!-- sweeps") < text.find("<!-- published"),
                "the section does not come before the published one")
@@ -276,7 +341,7 @@ def main():
         # the cap (phi_patch 0.5, above phi_stop): they are not the runs it would have made
         result = subprocess.run([sys.executable, REPORT, "--fig6", fig6, "--fig5", fig5_cap,
                                  "--out", out, "--doc", doc], capture_output=True, text=True)
-        text = open(doc).read()
+        text = from_fig5_cap = open(doc).read()
         expect(result.returncode == 0 and "growth-step cap of 3 against 5 here" in text and
                "none borrowed" in text, "the sweep capped at 5 steps borrowed runs capped at 3")
         # its withdrawn run: unfinished, and named with its reason
@@ -293,8 +358,11 @@ def main():
         expect(statuses.count("unconverged") == 1 and statuses.count("failed") == 0,
                f"fig5_p4: one run at the iteration limit gives statuses {statuses}, not one "
                f"unconverged")
-        # bad input: no folder, a folder without runs
-        for args in ([], ["--fig6", scratch]):
+        check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
+        # bad input: no folder, a folder without runs, a file that is no archive, a missing one
+        not_archive = os.path.join(scratch, "fig6_t.sweep")
+        for args in ([], ["--fig6", scratch], ["--fig6", not_archive],
+                     ["--fig6", os.path.join(scratch, "none_summary.csv")]):
             result = subprocess.run([sys.executable, REPORT] + args, capture_output=True,
                                     text=True)
             expect(result.returncode != 0 and "error" in result.stderr,

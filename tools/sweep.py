@@ -188,8 +188,12 @@ def point_label(point):
     return " ".join(f"{name}={value}" for name, value in point) or "base"
 
 
-def plan(args):
-    sweep = SweepFile(args.sweep_file)
+def planned_runs(sweep_file):
+    """What a sweep file plans, without writing anything: (the SweepFile, the names a run may
+    set, the runs in order). Each run is {id, point, point_values, tissue, seed, values}, values
+    holding its variables but the paths of its tissue and parameter file. Exits naming the
+    problem on a bad sweep file."""
+    sweep = SweepFile(sweep_file)
     sets = parameter_sets(sweep.parameters)
     if sweep.set not in sets:
         sys.exit(f"{sweep.path}: the set '{sweep.set}' is not in {sweep.parameters} "
@@ -232,10 +236,18 @@ def plan(args):
                         sys.exit(f"{sweep.path}: 'growth' needs delta_a > 0, not {delta_a}")
                     steps = math.ceil(sweep.growth[0] / delta_a - 1e-9)
                     values["steps"] = str(min(steps, sweep.growth[1] or steps))
+                values.setdefault("set", sweep.set)
                 runs.append({"point": point_label(point), "point_values": dict(point),
                              "tissue": tissue, "seed": seed, "values": values})
     width = len(str(len(runs)))
-    planned = {f"{k:0{width}d}" for k in range(1, len(runs) + 1)}
+    for k, run in enumerate(runs, 1):
+        run["id"] = f"{k:0{width}d}"
+    return sweep, known, runs
+
+
+def plan(args):
+    sweep, known, runs = planned_runs(args.sweep_file)
+    planned = {run["id"] for run in runs}
     runs_dir = os.path.join(args.dir, "runs")
     stale = sorted(d for d in (os.listdir(runs_dir) if os.path.isdir(runs_dir) else [])
                    if d not in planned and os.path.exists(os.path.join(runs_dir, d, "run.json")))
@@ -244,13 +256,11 @@ def plan(args):
                  f"earlier, other plan); plan a changed sweep into a new folder")
     os.makedirs(runs_dir, exist_ok=True)
     tool = os.path.abspath(__file__)
-    for k, run in enumerate(runs, 1):
-        run["id"] = f"{k:0{width}d}"
+    for run in runs:
         folder = os.path.join(args.dir, "runs", run["id"])
         os.makedirs(folder, exist_ok=True)
         values = dict(run["values"], tissue=path_from(folder, run["tissue"]),
                       parameters=path_from(folder, sweep.parameters))
-        values.setdefault("set", sweep.set)
         record = {"sweep": sweep.name, "id": run["id"], "point": run["point"],
                   "point_values": run["point_values"], "seed": run["seed"],
                   "tissue": path_from(ROOT, run["tissue"]), "N": int(values["N"]),
@@ -290,7 +300,7 @@ def plan(args):
         f.write(f"variable protocol string {path_from(first, sweep.protocol)}\n")
         f.write(f'variable sweep_state string "{python} {tool} state"\n')
         f.write(f'variable sweep_finish string "{python} {tool} finish"\n')
-    print(f"{len(runs)} runs of sweep {sweep.name} ({len(grid)} points x {len(sweep.tissues)} "
+    print(f"{len(runs)} runs of sweep {sweep.name} ({len(sweep.grid())} points x {len(sweep.tissues)} "
           f"tissues x {len(sweep.seeds)} seeds) in {args.dir}")
 
 

@@ -2,12 +2,14 @@
 """The paper's sensitivity study from sweep folders: figures, CSVs and a section of
 doc/validation.md with a verdict on each direction the paper states.
 
-    tools/sweep_report.py [--fig4 DIR] [--fig5 DIR] [--fig6 DIR] [--out validation/sweeps]
-                          [--doc doc/validation.md] [--accept unconverged]
+    tools/sweep_report.py [--fig4 DIR|CSV] [--fig5 DIR|CSV] [--fig6 DIR|CSV]
+                          [--out validation/sweeps] [--doc doc/validation.md]
+                          [--accept unconverged] [--sweeps examples/sweep]
 
 Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
 partly run) with examples/sweep/in.sweep. For each: `tools/sweep.py summary DIR`, its
-summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, the figures of
+summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, its withdrawn
+runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv, the figures of
 tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's highlighted points
 ringed and ensemble calA curves of those points; Fig 6: delta_A and delta_phi_plus against P0
 and the calA curves), and what the sweep cost (runs, loop seconds, wall time). Then the
@@ -15,12 +17,19 @@ section between SECTION_BEGIN and SECTION_END of --doc is replaced (appended the
 per direction of the paper, the ensemble means, their standard errors, and the verdict by the
 rule of compare() below. Nothing in the section is typed by hand; a sweep left out or not
 run yields "not run". Needs python3-numpy and python3-matplotlib (for the figures).
+
+A CSV in place of a DIR is such an archive, OUT/<sweep>_summary.csv, read back where the sweep
+folder is gone (sweep folders hold gigabytes of dumps and stay on the machine that ran them):
+its rows, _withdrawn.csv and figures are used as the earlier report wrote them, after checking
+that they are, run for run, the runs --sweeps/<sweep>.sweep plans today (ids, points, seeds,
+tissues, step caps); an archive of another plan is refused.
 """
 import argparse
 import csv
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -52,7 +61,15 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
 # Fig 6 sweep may leave its base point out and borrow those runs (borrow_base checks it).
 # The runs must share the stopping rule too: phi_stop here; the growth-step cap "steps" may
 # differ only where no borrowed run reached the smaller cap (borrow_base checks it).
-BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set")
+BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set", "tmaxadapt")
+PROTOCOL = os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll")
+
+
+def protocol_defaults(protocol=PROTOCOL):
+    """{name: value} of the protocol's index variables: what a run that leaves one unset
+    takes (a sweep file that does not mention tmaxadapt runs with the protocol's 'no')."""
+    text = open(protocol).read()
+    return dict(re.findall(r"^variable\s+(\w+)\s+index\s+(\S+)", text, re.MULTILINE))
 
 
 # --- ensembles and the comparison rule ----------------------------------------------------------
@@ -154,38 +171,124 @@ def sweep_cost(rows):
 
 
 def withdrawn_runs(folder):
-    """({reason: [run ids]}, loop seconds) of the runs of a sweep folder that were withdrawn:
+    """[(run id, reason, loop seconds)] of the runs of a sweep folder that were withdrawn:
     their cost still counts."""
-    found, loop = {}, 0.0
+    found = []
     runs = os.path.join(folder, "runs")
     for run in sorted(os.listdir(runs)):
         path = os.path.join(runs, run, WITHDRAWN_REASON)
         if os.path.exists(path):
-            found.setdefault(" ".join(open(path).read().split()), []).append(run)
             log = os.path.join(os.path.dirname(path), "log.lammps")
-            if os.path.exists(log):
-                text = open(log, errors="replace").read()
-                loop += sum(t.seconds for t in sweep.mesophyll_run.loop_times(text))
-    return found, loop
+            text = open(log, errors="replace").read() if os.path.exists(log) else ""
+            found.append((run, " ".join(open(path).read().split()),
+                          sum(t.seconds for t in sweep.mesophyll_run.loop_times(text))))
+    return found
+
+
+WITHDRAWN_COLUMNS = ["run", "reason", "loop_s"]
+
+
+def archive_name(path):
+    """The sweep's name when path is an archived summary <name>_summary.csv, else None."""
+    base = os.path.basename(path)
+    return base[:-len("_summary.csv")] if base.endswith("_summary.csv") else None
 
 
 class Sweep:
-    """A summarized sweep folder and the figures drawn from it."""
+    """A summarized sweep and the figures drawn from it: from its folder, or from the CSVs a
+    report archived from that folder (OUT/<name>_summary.csv, _points.csv, _withdrawn.csv and
+    the figures beside them), checked against the runs its sweep file plans."""
 
-    def __init__(self, kind, folder, out, accept):
-        self.kind, self.folder, self.out, self.accept = kind, folder, out, accept
-        extra = [a for k in accept if k != "ok" for a in ("--accept", k)]
+    def __init__(self, kind, source, out, accept, sweep_files):
+        self.kind, self.out, self.accept = kind, out, accept
+        self.figures = []
+        if os.path.isfile(source):
+            self.load_archive(source, sweep_files)
+        else:
+            self.load_folder(source)
+        self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
+        self.withdrawn = {}
+        for run, reason, _ in self.withdrawn_list:
+            self.withdrawn.setdefault(reason, []).append(run)
+        self.withdrawn_loop_s = sum(loop for _, _, loop in self.withdrawn_list)
+        self.loop_s += self.withdrawn_loop_s
+        self.archive()
+
+    def load_folder(self, folder):
+        self.folder, self.archived = folder, False
+        extra = [a for k in self.accept if k != "ok" for a in ("--accept", k)]
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
         self.name = os.path.basename(os.path.abspath(folder))
-        for table in ("summary", "points"):
-            shutil.copy(os.path.join(folder, f"{table}.csv"),
-                        os.path.join(out, f"{self.name}_{table}.csv"))
-        self.loop_s, self.wall_s, self.timed = sweep_cost(self.rows)
-        self.withdrawn, self.withdrawn_loop_s = withdrawn_runs(folder)
-        self.loop_s += self.withdrawn_loop_s
-        self.figures = []
+        self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
+
+    def load_archive(self, path, sweep_files):
+        self.name, self.archived = archive_name(path), True
+        self.folder = os.path.dirname(os.path.abspath(path))
+        self.rows = list(csv.DictReader(open(path)))
+        sweep_file = os.path.join(sweep_files, f"{self.name}.sweep")
+        if not os.path.isfile(sweep_file):
+            sys.exit(f"sweep_report: {path} is the archive of sweep {self.name}, but its sweep "
+                     f"file {sweep_file} does not exist")
+        definition, _, planned = sweep.planned_runs(sweep_file)
+        self.records = {}
+        for run in planned:
+            self.records[run["id"]] = {"variables": dict(
+                run["values"], tissue=run["tissue"], parameters=definition.parameters)}
+        self.check_archive(path, sweep_file, planned)
+        withdrawn = os.path.join(self.folder, f"{self.name}_withdrawn.csv")
+        self.withdrawn_list = ([(r["run"], r["reason"], float(r["loop_s"]))
+                                for r in csv.DictReader(open(withdrawn))]
+                               if os.path.exists(withdrawn) else [])
+        # the figures the report drew from the folder when it archived it
+        for what in ("heatmaps", "against", "curves"):
+            png = os.path.join(self.folder, f"{self.name}_{what}.png")
+            if os.path.exists(png):
+                self.figures.append(png)
+
+    def check_archive(self, path, sweep_file, planned):
+        """The archived rows must be the runs the sweep file plans today, one for one: the same
+        ids, points, seeds, tissues, cells and step caps; else the archive is of another plan."""
+        def planned_row(run):
+            return (run["id"], run["point"], run["seed"], sweep.path_from(ROOT, run["tissue"]),
+                    run["values"]["N"], run["values"].get("steps", ""))
+        def archived_row(row):
+            return tuple(row.get(c) for c in ("run", "point", "seed", "tissue", "N",
+                                              "steps_planned"))
+        want = [planned_row(run) for run in planned]
+        have = [archived_row(row) for row in self.rows]
+        if want != have:
+            first = next((f"run {w[0]}: planned {w[1:]}, archived {h[1:]}"
+                          for w, h in zip(want, have) if w != h),
+                         f"{len(want)} runs planned, {len(have)} archived")
+            sys.exit(f"sweep_report: {path} is not the sweep {sweep_file} plans today ({first});"
+                     f" give the sweep folder, or the sweep file the archive was made with")
+
+    def archive(self):
+        """Keep the summary as CSVs in OUT, where a later report can read it back."""
+        for table in ("summary", "points"):
+            source = os.path.join(self.folder, f"{self.name}_{table}.csv" if self.archived
+                                  else f"{table}.csv")
+            target = os.path.join(self.out, f"{self.name}_{table}.csv")
+            if os.path.abspath(source) != os.path.abspath(target):
+                shutil.copy(source, target)
+        if self.archived:
+            for png in self.figures:
+                if os.path.dirname(os.path.abspath(png)) != os.path.abspath(self.out):
+                    shutil.copy(png, self.out)
+            self.figures = [os.path.join(self.out, os.path.basename(p)) for p in self.figures]
+        withdrawn = os.path.join(self.out, f"{self.name}_withdrawn.csv")
+        if self.archived and os.path.abspath(self.folder) == os.path.abspath(self.out):
+            return
+        if self.withdrawn_list:
+            with open(withdrawn, "w", newline="") as f:
+                out = csv.writer(f)
+                out.writerow(WITHDRAWN_COLUMNS)
+                out.writerows([run, reason, f"{loop:.6g}"]
+                              for run, reason, loop in self.withdrawn_list)
+        elif os.path.exists(withdrawn):
+            os.remove(withdrawn)
 
     def plot(self, what, args, extra):
         png = os.path.join(self.out, f"{self.name}_{what}.png")
@@ -225,7 +328,16 @@ class Sweep:
     borrowed = None    # (label, Ensemble) of a base point taken from the Fig 6 sweep
 
     def run_record(self, row):
+        """The run's record: its variables as the run saw them (a folder's run.json, or the
+        plan of an archive's sweep file)."""
+        if self.archived:
+            return self.records[row["run"]]
         return json.load(open(os.path.join(self.folder, "runs", row["run"], "run.json")))
+
+    def parameter_file(self, record):
+        """The run's parameter file (a folder's run.json gives it relative to the run)."""
+        return os.path.join(self.folder, "runs", record["id"], record["variables"]["parameters"]) \
+            if not self.archived else record["variables"]["parameters"]
 
     def borrow_base(self, fig6):
         """Take the base point from the Fig 6 sweep where this sweep lacks it and runs at one of
@@ -235,9 +347,8 @@ class Sweep:
         if ensemble_at(self.rows, BASE[self.kind], self.accept) is not None or fig6 is None:
             return None
         mine, theirs = self.run_record(self.rows[0]), fig6.run_record(fig6.rows[0])
-        sets = [sweep.parameter_sets(os.path.join(s.folder, "runs", s.rows[0]["run"],
-                                                  r["variables"]["parameters"]))
-                [r["variables"]["set"]] for s, r in ((self, mine), (fig6, theirs))]
+        sets = [sweep.parameter_sets(s.parameter_file(r))[r["variables"]["set"]]
+                for s, r in ((self, mine), (fig6, theirs))]
         for s in sets:
             s.pop("P0", None)
         if sets[0] != sets[1]:
@@ -247,9 +358,10 @@ class Sweep:
         rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
+        defaults = protocol_defaults()
+        value = lambda record, name: record["variables"].get(name, defaults.get(name))  # noqa
         differ = [name for name in BORROW_RUN_VARIABLES
-                  if mine["variables"].get(name) != fig6.run_record(rows[0])["variables"]
-                  .get(name)]
+                  if value(mine, name) != value(fig6.run_record(rows[0]), name)]
         seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
         if differ or seeds_tissues(rows) != seeds_tissues(
                 [r for r in self.rows if r["point"] == self.rows[0]["point"]]):
@@ -451,9 +563,16 @@ def points_table(sweep):
 
 def section(sweeps, doc_dir, command, notes):
     rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
+    archived = [s.name for s in sweeps.values() if s.archived]
+    source = "" if not archived else (
+        f" ({' and '.join(archived)} read back from the summaries an earlier report archived "
+        f"from {'their' if len(archived) > 1 else 'its'} folder{'s' if len(archived) > 1 else ''}"
+        f" (`<name>_summary.csv` beside the figures), checked run for run against the runs "
+        f"the sweep file plans today; rows, cost, withdrawn runs and figures are that "
+        f"report's)")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of `examples/sweep/fig4_coarse.sweep`, "
-             "`fig5_coarse.sweep` and `fig6_coarse.sweep` (reduced grids of `fig4.sweep`, "
+             f"`fig5_coarse.sweep` and `fig6_coarse.sweep`{source} (reduced grids of `fig4.sweep`, "
              "`fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
              "and why it is reduced). Every run has vertex insertion (the example's default). "
              "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
@@ -514,8 +633,9 @@ def section(sweeps, doc_dir, command, notes):
         for reason, runs in sweep.withdrawn.items():
             many = len(runs) > 1
             lines += [f"Withdrawn: run{'s' if many else ''} {', '.join(runs)} of {sweep.name} "
-                      f"({reason}); {'their' if many else 'its'} outputs lie in "
-                      f"runs/<id>/withdrawn/, {'they count' if many else 'it counts'} as "
+                      f"({reason}); {'their' if many else 'its'} outputs lie in the sweep "
+                      f"folder's runs/<id>/withdrawn/ (the runs, reasons and loop times in "
+                      f"`{sweep.name}_withdrawn.csv`), {'they count' if many else 'it counts'} as "
                       f"unfinished here, and a resumed sweep runs {'them' if many else 'it'} "
                       f"again from the start.", ""]
         lines += points_table(sweep) + [""]
@@ -545,7 +665,11 @@ def write_section(doc, text):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     for kind in ("fig4", "fig5", "fig6"):
-        p.add_argument(f"--{kind}", metavar="DIR", help=f"sweep folder of {kind}*.sweep")
+        p.add_argument(f"--{kind}", metavar="DIR|CSV",
+                       help=f"sweep folder of {kind}*.sweep, or the <name>_summary.csv a "
+                            f"report archived from one")
+    p.add_argument("--sweeps", default=os.path.join(ROOT, "examples", "sweep"),
+                   help="where an archive's sweep file <name>.sweep lies")
     p.add_argument("--out", default=os.path.join(ROOT, "validation", "sweeps"))
     p.add_argument("--doc", default=os.path.join(ROOT, "doc", "validation.md"))
     p.add_argument("--accept", action="append", default=["ok"], choices=["unconverged"],
@@ -554,12 +678,17 @@ def main():
     given = {k: getattr(args, k) for k in ("fig4", "fig5", "fig6") if getattr(args, k)}
     if not given:
         p.error("give at least one sweep folder (--fig4, --fig5, --fig6)")
-    for kind, folder in given.items():
-        if not os.path.isdir(os.path.join(folder, "runs")):
-            p.error(f"--{kind} {folder}: no runs/ folder there (plan and run the sweep first)")
+    for kind, source in given.items():
+        if os.path.isfile(source):
+            if archive_name(source) is None:
+                p.error(f"--{kind} {source}: a file must be an archived <name>_summary.csv")
+        elif not os.path.isdir(os.path.join(source, "runs")):
+            p.error(f"--{kind} {source}: neither a sweep folder with runs/ (plan and run the "
+                    f"sweep first) nor an archived <name>_summary.csv")
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
-    sweeps = {k: Sweep(k, folder, args.out, set(args.accept)) for k, folder in given.items()}
+    sweeps = {k: Sweep(k, source, args.out, set(args.accept), args.sweeps)
+              for k, source in given.items()}
     notes = [s.borrow_base(sweeps.get("fig6")) for k, s in sweeps.items() if k != "fig6"]
     def shown(folder):    # as typed from the package's folder, where it lies inside
         path = os.path.abspath(folder)
