@@ -155,6 +155,13 @@ def protocol_variables(protocol):
     return names
 
 
+def protocol_defaults(protocol):
+    """{name: value} of the protocol's index variables: what a run that leaves one unset takes
+    (a sweep file that does not mention tmaxadapt runs with in.mesophyll's 'no')."""
+    text = open(protocol).read()
+    return dict(re.findall(r"^\s*variable\s+(\w+)\s+index\s+(\S+)", text, re.MULTILINE))
+
+
 def parameter_sets(path):
     """{set: {name: value}} of a parameter file (doc/mesophyll_parameters.rst)."""
     sets = {}

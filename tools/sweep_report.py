@@ -29,7 +29,6 @@ import csv
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -62,14 +61,8 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
 # The runs must share the stopping rule too: phi_stop here; the growth-step cap "steps" may
 # differ only where no borrowed run reached the smaller cap (borrow_base checks it).
 BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set", "tmaxadapt")
+# the protocol whose defaults a run takes for the variables its sweep leaves unset
 PROTOCOL = os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll")
-
-
-def protocol_defaults(protocol=PROTOCOL):
-    """{name: value} of the protocol's index variables: what a run that leaves one unset
-    takes (a sweep file that does not mention tmaxadapt runs with the protocol's 'no')."""
-    text = open(protocol).read()
-    return dict(re.findall(r"^variable\s+(\w+)\s+index\s+(\S+)", text, re.MULTILINE))
 
 
 # --- ensembles and the comparison rule ----------------------------------------------------------
@@ -358,7 +351,7 @@ class Sweep:
         rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
-        defaults = protocol_defaults()
+        defaults = sweep.protocol_defaults(PROTOCOL)
         value = lambda record, name: record["variables"].get(name, defaults.get(name))  # noqa
         differ = [name for name in BORROW_RUN_VARIABLES
                   if value(mine, name) != value(fig6.run_record(rows[0]), name)]
