@@ -233,7 +233,7 @@ def check_archives(scratch, fig6, from_folders_of, out):
         expect(folders_part and folders_part == section_after(from_archives,
                                                               "### Directions of the paper"),
                f"{name}: the report of the archives differs from that of the folders")
-        expect(f"{name} and fig6_t read back from the summaries" in from_archives,
+        expect(f"{name} and fig6_t are read back from the summary" in from_archives,
                f"{name}: the section does not say that its sweeps came from archives")
     expect("Withdrawn: run 1 of fig5_cap" in from_archives and
            os.path.exists(os.path.join(out, "fig5_cap_withdrawn.csv")),
@@ -309,6 +309,8 @@ def main():
         expect(text.count("<!-- sweeps: tools/sweep_report.py -->") == 1 and
                text.count("<!-- /sweeps -->") == 1, "not exactly one section after two reports")
         expect(tail in text, "the published section is not kept")
+        expect("<!-- /sweeps -->\n\n" + tail in text,
+               "the rewritten section is not followed by one blank line")
         check_claim(text, "P0 = 5e-2 compacts", "P0=5e-2", "P0=1e-3", "**holds**",
                     "[2 ok, 1 failed]")
         check_claim(text, "low eps_b compacts", "beta=100 eps_b=0.01", "P0=1e-5",

@@ -558,16 +558,16 @@ def section(sweeps, doc_dir, command, notes):
     rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
     archived = [s.name for s in sweeps.values() if s.archived]
     source = "" if not archived else (
-        f" ({' and '.join(archived)} read back from the summaries an earlier report archived "
-        f"from {'their' if len(archived) > 1 else 'its'} folder{'s' if len(archived) > 1 else ''}"
-        f" (`<name>_summary.csv` beside the figures), checked run for run against the runs "
-        f"the sweep file plans today; rows, cost, withdrawn runs and figures are that "
-        f"report's)")
+        f" {' and '.join(archived)} {'are' if len(archived) > 1 else 'is'} read back from the "
+        f"summary an earlier report archived from the sweep folder (`<name>_summary.csv` "
+        f"beside the figures), checked run for run against the runs the sweep file plans "
+        f"today: rows, cost, withdrawn runs and figures are that report's.")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of `examples/sweep/fig4_coarse.sweep`, "
-             f"`fig5_coarse.sweep` and `fig6_coarse.sweep`{source} (reduced grids of `fig4.sweep`, "
+             "`fig5_coarse.sweep` and `fig6_coarse.sweep` (reduced grids of `fig4.sweep`, "
              "`fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
-             "and why it is reduced). Every run has vertex insertion (the example's default). "
+             f"and why it is reduced).{source} Every run has vertex insertion (the example's "
+             "default). "
              "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
              "`tools/sweep.py summary`: only *ok* runs enter the means; a *failed* run (rings "
              "that cross themselves or are inverted, non-finite values) is counted, never "
@@ -646,7 +646,8 @@ def write_section(doc, text):
     start, end = old.find(SECTION_BEGIN), old.find(SECTION_END)
     published = old.find(PUBLISHED_BEGIN)
     if start >= 0 and end > start:
-        new = old[:start] + text + old[end + len(SECTION_END):].lstrip("\n")
+        rest = old[end + len(SECTION_END):].lstrip("\n")
+        new = old[:start] + text + ("\n" + rest if rest else "")    # one blank line after it
     elif published >= 0:
         new = old[:published] + text + "\n" + old[published:]
     else:
