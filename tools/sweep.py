@@ -184,6 +184,17 @@ def cells_in(tissue):
     return len(cells)
 
 
+def planned_protocol(folder, run):
+    """The protocol file the runs of a planned folder include: plan.lmp gives it relative to a
+    run's folder (runs/<run>)."""
+    with open(os.path.join(folder, "plan.lmp")) as f:
+        for line in f:
+            words = line.split()
+            if words[:3] == ["variable", "protocol", "string"]:
+                return os.path.normpath(os.path.join(folder, "runs", run, words[3]))
+    sys.exit(f"{folder}/plan.lmp names no protocol: not a folder of tools/sweep.py plan")
+
+
 def path_from(folder, path):
     """path as the run folder sees it: relative when both lie in one tree (the package's, or a
     sweep folder's next to its files), so that the two move together; else absolute."""

@@ -62,7 +62,6 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
 # differ only where no borrowed run reached the smaller cap (borrow_base checks it).
 BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set", "tmaxadapt")
 # the protocol whose defaults a run takes for the variables its sweep leaves unset
-PROTOCOL = os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll")
 
 
 # --- ensembles and the comparison rule ----------------------------------------------------------
@@ -213,6 +212,7 @@ class Sweep:
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
         self.name = os.path.basename(os.path.abspath(folder))
+        self.protocol = sweep.planned_protocol(folder, self.rows[0]["run"])
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
 
@@ -225,6 +225,7 @@ class Sweep:
             sys.exit(f"sweep_report: {path} is the archive of sweep {self.name}, but its sweep "
                      f"file {sweep_file} does not exist")
         definition, _, planned = sweep.planned_runs(sweep_file)
+        self.protocol = definition.protocol
         self.records = {}
         for run in planned:
             self.records[run["id"]] = {"variables": dict(
@@ -259,21 +260,19 @@ class Sweep:
                      f" give the sweep folder, or the sweep file the archive was made with")
 
     def archive(self):
-        """Keep the summary as CSVs in OUT, where a later report can read it back."""
+        """Keep the summary as CSVs in OUT, where a later report can read it back (an archive
+        read where it lies is kept already)."""
+        if self.archived and os.path.abspath(self.folder) == os.path.abspath(self.out):
+            return
         for table in ("summary", "points"):
             source = os.path.join(self.folder, f"{self.name}_{table}.csv" if self.archived
                                   else f"{table}.csv")
-            target = os.path.join(self.out, f"{self.name}_{table}.csv")
-            if os.path.abspath(source) != os.path.abspath(target):
-                shutil.copy(source, target)
+            shutil.copy(source, os.path.join(self.out, f"{self.name}_{table}.csv"))
         if self.archived:
             for png in self.figures:
-                if os.path.dirname(os.path.abspath(png)) != os.path.abspath(self.out):
-                    shutil.copy(png, self.out)
+                shutil.copy(png, self.out)
             self.figures = [os.path.join(self.out, os.path.basename(p)) for p in self.figures]
         withdrawn = os.path.join(self.out, f"{self.name}_withdrawn.csv")
-        if self.archived and os.path.abspath(self.folder) == os.path.abspath(self.out):
-            return
         if self.withdrawn_list:
             with open(withdrawn, "w", newline="") as f:
                 out = csv.writer(f)
@@ -351,10 +350,11 @@ class Sweep:
         rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
-        defaults = sweep.protocol_defaults(PROTOCOL)
-        value = lambda record, name: record["variables"].get(name, defaults.get(name))  # noqa
+        # a variable a run leaves unset takes its protocol's default
+        value = lambda s, record, name: record["variables"].get(  # noqa: E731
+            name, sweep.protocol_defaults(s.protocol).get(name))
         differ = [name for name in BORROW_RUN_VARIABLES
-                  if value(mine, name) != value(fig6.run_record(rows[0]), name)]
+                  if value(self, mine, name) != value(fig6, fig6.run_record(rows[0]), name)]
         seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
         if differ or seeds_tissues(rows) != seeds_tissues(
                 [r for r in self.rows if r["point"] == self.rows[0]["point"]]):
