@@ -30,6 +30,8 @@ a copy of a validation.md. Checks, against means and standard errors computed he
     gives the same directions, tables, costs and withdrawn runs as the report of the folders,
     borrowing included; an archive whose sweep file now plans other runs is refused; a base
     point is borrowed only where tmaxadapt agrees (unset reads as the protocol's 'no');
+  * two sweeps of one figure: each gets the figure's directions and table, the first lends the
+    base point; a sweep given twice is refused;
   * bad input: no sweep, a folder without runs, a file that is not <name>_summary.csv, a
     missing archive.
 Exit 77 (skipped) without python3-matplotlib, which the figures need.
@@ -148,12 +150,12 @@ def check_claim(text, title, point, other, verdict, counts=None):
 
 
 class StubSweep:
-    """What claim_line, unchanged_lines and optimal_lines read of a sweep: a name, the
-    Ensemble at grid values, and the points in order."""
+    """What claim_line, unchanged_lines and optimal_lines read of a sweep: a name, its figure,
+    the Ensemble at grid values, and the points in order."""
 
-    def __init__(self, report, name, points):
-        self.name, self.table = name, [(values, report.Ensemble(rows, {"ok"}))
-                                       for values, rows in points]
+    def __init__(self, report, name, points, kind="fig6"):
+        self.name, self.kind = name, kind
+        self.table = [(values, report.Ensemble(rows, {"ok"})) for values, rows in points]
 
     def at(self, **values):
         return next((e for v, e in self.table if v == values), None)
@@ -197,7 +199,7 @@ def check_verdict_rules():
         ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
         ({"P0": 1e-5}, runs("delta_A_early", [1.0, 1.02, 1.04])),
         ({"P0": 1e-4}, runs("delta_A_early", [0.5]))])
-    optimal = [x for x in report.optimal_lines({"fig6": base}) if "delta_A_early" in x]
+    optimal = [x for x in report.optimal_lines([base]) if "delta_A_early" in x]
     expect(len(optimal) == 1 and "**holds**" not in optimal[0] and
            "no point resolved lower" in optimal[0] and "among the 1 of 2 other points" in
            optimal[0] and "rank 2 of the 3 points" in optimal[0],
@@ -215,6 +217,31 @@ def report(args, doc, out, sweeps=None):
     result = subprocess.run(command + (["--sweeps", sweeps] if sweeps else []),
                             capture_output=True, text=True)
     return result, open(doc).read()
+
+
+def check_two_of_a_figure(scratch, fig6, fig5, out):
+    """Two Fig 6 sweeps (a copy of fig6_t's folder as fig6_u): each gets the figure's
+    directions and its own table, the first lends the base point; one sweep given twice is
+    refused (its files in OUT would overwrite each other)."""
+    doc = os.path.join(scratch, "doc", "validation.md")
+    other = os.path.join(scratch, "fig6_u")
+    shutil.copytree(fig6, other)
+    result, text = report(["--fig6", fig6, other, "--fig5", fig5], doc, out)
+    expect(result.returncode == 0, f"two Fig 6 sweeps: {result.stderr}")
+    for name in ("fig6_t", "fig6_u"):
+        compacts = [line for line in text.splitlines()
+                    if line.startswith(f"- *P0 = 5e-2 compacts* (delta_phi_plus; {name})")]
+        expect(len(compacts) == 1 and "**holds**" in compacts[0]
+               and f"**{name}** (fig6)" in text and f"*P0 up to 1e-3 hardly matters* ({name})"
+               in text, f"two Fig 6 sweeps: {name} lacks its directions or its table")
+    expect("fig6_t's P0 = 1e-05 point" in text and "fig6_u's P0" not in text,
+           "two Fig 6 sweeps: the base point is not borrowed from the first")
+    expect(f"--fig5 {fig5} --fig6 {fig6} {other}`" in text,
+           "two Fig 6 sweeps: the section does not give the command as run")
+    result, _ = report(["--fig6", fig6, os.path.join(out, "fig6_t_summary.csv")], doc, out)
+    expect(result.returncode != 0 and "two sweeps named fig6_t" in result.stderr,
+           f"one sweep given twice: exit code {result.returncode}, {result.stderr.strip()}")
+    shutil.rmtree(other)
 
 
 def check_archives(scratch, fig6, from_folders_of, out):
@@ -360,6 +387,7 @@ def main():
         expect(statuses.count("unconverged") == 1 and statuses.count("failed") == 0,
                f"fig5_p4: one run at the iteration limit gives statuses {statuses}, not one "
                f"unconverged")
+        check_two_of_a_figure(scratch, fig6, fig5, out)
         check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
         # bad input: no folder, a folder without runs, a file that is no archive, a missing one
         not_archive = os.path.join(scratch, "fig6_t.sweep")

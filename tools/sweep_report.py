@@ -2,12 +2,14 @@
 """The paper's sensitivity study from sweep folders: figures, CSVs and a section of
 doc/validation.md with a verdict on each direction the paper states.
 
-    tools/sweep_report.py [--fig4 DIR|CSV] [--fig5 DIR|CSV] [--fig6 DIR|CSV]
+    tools/sweep_report.py [--fig4 DIR|CSV ...] [--fig5 DIR|CSV ...] [--fig6 DIR|CSV ...]
                           [--out validation/sweeps] [--doc doc/validation.md]
                           [--accept unconverged] [--sweeps examples/sweep]
 
 Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
-partly run) with examples/sweep/in.sweep. For each: `tools/sweep.py summary DIR`, its
+partly run) with examples/sweep/in.sweep. A figure may have several sweeps (e.g. fig6_coarse
+and fig6_N32, the same pressures at 16 and 32 cells): each gets the figure's directions, and
+the first is the one a base point is borrowed from. For each: `tools/sweep.py summary DIR`, its
 summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, its withdrawn
 runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv, the figures of
 tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's highlighted points
@@ -40,6 +42,7 @@ import sweep  # noqa: E402  (the parameter-file reader)
 
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 PLOT = os.path.join(ROOT, "tools", "sweep_plot.py")
+KINDS = ("fig4", "fig5", "fig6")
 SECTION_BEGIN = "<!-- sweeps: tools/sweep_report.py -->"
 SECTION_END = "<!-- /sweeps -->"
 PUBLISHED_BEGIN = "<!-- published: tools/validate.py --published -->"
@@ -495,10 +498,8 @@ def optimal_lines(sweeps):
     every other point. No point resolved lower is not a shown optimum: the line says so, and
     how many points could be compared at all."""
     lines = []
-    for kind in ("fig4", "fig5", "fig6"):
-        sweep = sweeps.get(kind)
-        if sweep is None:
-            continue
+    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind)):
+        kind = sweep.kind
         base = sweep.at(**BASE[kind])
         if base is None:
             lines.append(f"  - {sweep.name}: no base point ({BASE[kind]}).")
@@ -556,15 +557,17 @@ def points_table(sweep):
 
 def section(sweeps, doc_dir, command, notes):
     rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
-    archived = [s.name for s in sweeps.values() if s.archived]
+    archived = [s.name for s in sweeps if s.archived]
+    names = [f"`{s.name}.sweep`" for s in sweeps]
+    names[0] = f"`examples/sweep/{sweeps[0].name}.sweep`"
+    files = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
     source = "" if not archived else (
         f" {' and '.join(archived)} {'are' if len(archived) > 1 else 'is'} read back from the "
         f"summary an earlier report archived from the sweep folder (`<name>_summary.csv` "
         f"beside the figures), checked run for run against the runs the sweep file plans "
         f"today: rows, cost, withdrawn runs and figures are that report's.")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
-             f"Made by `{command}` from the sweep folders of `examples/sweep/fig4_coarse.sweep`, "
-             "`fig5_coarse.sweep` and `fig6_coarse.sweep` (reduced grids of `fig4.sweep`, "
+             f"Made by `{command}` from the sweep folders of {files} (reduced grids of `fig4.sweep`, "
              "`fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
              f"and why it is reduced).{source} Every run has vertex insertion (the example's "
              "default). "
@@ -586,28 +589,31 @@ def section(sweeps, doc_dir, command, notes):
              f"not show it: those lines say *no difference resolved*, with the standard "
              f"errors, never *holds*.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
-    f4, f5, f6 = sweeps.get("fig4"), sweeps.get("fig5"), sweeps.get("fig6")
-    lines.append(claim_line("low beta compacts", f5, {"beta": 30, "eps_b": 0.4},
-                            BASE["fig5"], "delta_phi_plus", +1))
-    lines.append(claim_line("low eps_b compacts", f5, {"beta": 100, "eps_b": 0.01},
-                            BASE["fig5"], "delta_phi_plus", +1))
-    lines.append(claim_line("low beta with low eps_b (the highlighted (30, 0.01)) compacts", f5,
-                            {"beta": 30, "eps_b": 0.01}, BASE["fig5"], "delta_phi_plus", +1))
-    lines.append(claim_line("delta_a = 0.01 with lambda = 5 compacts", f4,
-                            {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus", +1))
-    lines.append(claim_line("few contacts at small delta_a", f4, {"lambda": 5, "delta_a": 0.01},
-                            BASE["fig4"], "z_half", -1))
-    lines += unchanged_lines(f6, [{"P0": 1e-5}, {"P0": 1e-4}], BASE["fig6"])
-    lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
-                            "delta_phi_plus", +1))
-    lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
-                            "calA_final", +1, "calA_final: mean calA at the run's last step."))
+    of = lambda kind: [s for s in sweeps if s.kind == kind] or [None]  # noqa: E731
+    for f5 in of("fig5"):
+        lines.append(claim_line("low beta compacts", f5, {"beta": 30, "eps_b": 0.4},
+                                BASE["fig5"], "delta_phi_plus", +1))
+        lines.append(claim_line("low eps_b compacts", f5, {"beta": 100, "eps_b": 0.01},
+                                BASE["fig5"], "delta_phi_plus", +1))
+        lines.append(claim_line("low beta with low eps_b (the highlighted (30, 0.01)) compacts",
+                                f5, {"beta": 30, "eps_b": 0.01}, BASE["fig5"], "delta_phi_plus",
+                                +1))
+    for f4 in of("fig4"):
+        lines.append(claim_line("delta_a = 0.01 with lambda = 5 compacts", f4,
+                                {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus",
+                                +1))
+        lines.append(claim_line("few contacts at small delta_a", f4,
+                                {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "z_half", -1))
+    for f6 in of("fig6"):
+        lines += unchanged_lines(f6, [{"P0": 1e-5}, {"P0": 1e-4}], BASE["fig6"])
+        lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
+                                "delta_phi_plus", +1))
+        lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
+                                "calA_final", +1, "calA_final: mean calA at the run's last step."))
     lines += optimal_lines(sweeps)
     lines += ["", "### Per grid point, and what each figure cost", ""]
-    for kind in ("fig6", "fig5", "fig4"):
-        sweep = sweeps.get(kind)
-        if sweep is None:
-            continue
+    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
+        kind = sweep.kind
         runs = len(sweep.rows)
         done = sum(r["status"] != "unfinished" for r in sweep.rows)
         rate = (f"; {sweep.timed / (sweep.wall_s / 3600):.0f} runs per partition-hour"
@@ -658,10 +664,11 @@ def write_section(doc, text):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    for kind in ("fig4", "fig5", "fig6"):
-        p.add_argument(f"--{kind}", metavar="DIR|CSV",
+    for kind in KINDS:
+        p.add_argument(f"--{kind}", metavar="DIR|CSV", nargs="+", default=[],
                        help=f"sweep folder of {kind}*.sweep, or the <name>_summary.csv a "
-                            f"report archived from one")
+                            f"report archived from one; several: each gets the figure's "
+                            f"directions, the first lends its base point")
     p.add_argument("--sweeps", default=os.path.join(ROOT, "examples", "sweep"),
                    help="where an archive's sweep file <name>.sweep lies")
     p.add_argument("--out", default=os.path.join(ROOT, "validation", "sweeps"))
@@ -669,25 +676,33 @@ def main():
     p.add_argument("--accept", action="append", default=["ok"], choices=["unconverged"],
                    help="also average runs of this status (default: ok only)")
     args = p.parse_args()
-    given = {k: getattr(args, k) for k in ("fig4", "fig5", "fig6") if getattr(args, k)}
+    given = [(kind, source) for kind in KINDS for source in getattr(args, kind)]
     if not given:
         p.error("give at least one sweep folder (--fig4, --fig5, --fig6)")
-    for kind, source in given.items():
+    for kind, source in given:
         if os.path.isfile(source):
             if archive_name(source) is None:
                 p.error(f"--{kind} {source}: a file must be an archived <name>_summary.csv")
         elif not os.path.isdir(os.path.join(source, "runs")):
             p.error(f"--{kind} {source}: neither a sweep folder with runs/ (plan and run the "
                     f"sweep first) nor an archived <name>_summary.csv")
+    names = [archive_name(s) if os.path.isfile(s) else os.path.basename(os.path.abspath(s))
+             for _, s in given]
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:    # their CSVs and figures in OUT would overwrite each other
+        p.error(f"two sweeps named {', '.join(twice)}: each sweep once")
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
-    sweeps = {k: Sweep(k, source, args.out, set(args.accept), args.sweeps)
-              for k, source in given.items()}
-    notes = [s.borrow_base(sweeps.get("fig6")) for k, s in sweeps.items() if k != "fig6"]
+    sweeps = [Sweep(kind, source, args.out, set(args.accept), args.sweeps)
+              for kind, source in given]
+    fig6 = next((s for s in sweeps if s.kind == "fig6"), None)
+    notes = [s.borrow_base(fig6) for s in sweeps if s.kind != "fig6"]
     def shown(folder):    # as typed from the package's folder, where it lies inside
         path = os.path.abspath(folder)
         return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
-    command = "tools/sweep_report.py " + " ".join(f"--{k} {shown(f)}" for k, f in given.items())
+    command = "tools/sweep_report.py " + " ".join(
+        f"--{kind} " + " ".join(shown(s) for s in getattr(args, kind))
+        for kind in KINDS if getattr(args, kind))
     write_section(args.doc, section(sweeps, os.path.dirname(os.path.abspath(args.doc)),
                                     command, [n for n in notes if n]))
     print(f"wrote {args.doc} (section {SECTION_BEGIN}) and {len(sweeps)} sweeps' CSVs and PNGs "
