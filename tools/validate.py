@@ -295,24 +295,33 @@ def write_report(runs, out, quick):
                      f"{int(x['bonds'][-1])} | {x['dphi_plus'][-1]:.4f} | "
                      f"{np.max(np.abs(x['P'] / 1e-3 - 1)):.1e} | {x['failed_checks']} |")
     lines += failure_section(runs)
-    # the ensembles of tools/sweep_report.py and the comparison with the published code (part
-    # D, --published) are kept as they were
     path = os.path.join(out, "validation.md")
+    rewrite(path, lines)
+    print(f"wrote {path} and three PNGs")
+
+
+def rewrite(path, lines):
+    """Write lines (parts A-C) to path, keeping from its old text the sections of AFTER_PART_C,
+    the comparison with the published code (part D, --published) and the 3d section, as they
+    were."""
     _, kept = split_published_section(path)
-    sweeps = marked_section(path, SWEEPS_BEGIN, SWEEPS_END)
-    sweeps += marked_section(path, STALL_BEGIN, STALL_END)    # written by hand, after the sweeps
+    sweeps = "".join(marked_section(path, begin, end) for begin, end in AFTER_PART_C)
     threed = marked_section(path, THREED_BEGIN, THREED_END)
     if threed:  # written by hand: split_published_section left it in the text it drops
         kept += threed
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n" + (sweeps + "\n" if sweeps else "") + kept)
-    print(f"wrote {path} and three PNGs")
 
 
 PUB_BEGIN, PUB_END = "<!-- published: tools/validate.py --published -->", "<!-- /published -->"
 SWEEPS_BEGIN, SWEEPS_END = "<!-- sweeps: tools/sweep_report.py -->", "<!-- /sweeps -->"
-STALL_BEGIN, STALL_END = ("<!-- fig4 stall: validation/fig4_stall, written by hand -->",
-                          "<!-- /fig4 stall -->")
+# the sections kept, in this order, between part C and part D: tools/sweep_report.py's, then
+# those written by hand about its sweeps
+AFTER_PART_C = (
+    (SWEEPS_BEGIN, SWEEPS_END),
+    ("<!-- fig4 stall: validation/fig4_stall, written by hand -->", "<!-- /fig4 stall -->"),
+    ("<!-- low bending: validation/published/low_bending.py, written by hand -->",
+     "<!-- /low bending -->"))
 THREED_BEGIN, THREED_END = ("<!-- 3d: examples/polyhedra/in.grow_tissue3d, written by hand -->",
                             "<!-- /3d -->")
 
