@@ -2,8 +2,8 @@
 """Run the published driver (readInMesoNetwork2D, built by build.sh) with the package's default
 parameter set on one seed, and write its trajectory as a CSV measured by the package itself.
 
-    run.py BINARY INPUT SEED OUT.csv [--work DIR] [--phi-stop 0.45] [--lmp build/lmp]
-           [--measure-only]
+    run.py BINARY INPUT SEED OUT.csv [--work DIR] [--phi-stop 0.45] [--steps K]
+           [--set NAME=VALUE ...] [--lmp build/lmp] [--measure-only]
 
 INPUT is the file make_input.py wrote. The driver runs in DIR (default: next to OUT.csv,
 OUT.work/) and prints a frame (meso2D::printMesoNetworkCTCS2D) once after its initial
@@ -18,7 +18,9 @@ overlap, as fix dpoly/check counts them (its vector element 8). --measure-only r
 DIR without running the driver.
 
 The driver's arguments are the values of the `default` set of potentials/arabidopsis.mesophyll,
-mapped in ARGS below; README.md says why each is what it is.
+mapped in ARGS below; README.md says why each is what it is. --set NAME=VALUE replaces one of
+them (e.g. --set kb0=0.01 for Fig 5's low bending stiffness); --steps K stops the driver after
+K growth steps (default: only --phi-stop).
 """
 import argparse
 import csv
@@ -68,7 +70,7 @@ def last_frame(path):
     return last
 
 
-def run_driver(binary, inp, seed, work, phi_stop):
+def run_driver(binary, inp, seed, work, phi_stop, max_steps=None):
     """Run the driver in work/; return [(growth_steps, iterations, wall_s)] per printed frame.
     wall_s of a frame: seconds from the previous frame's minimum to this one's (break, insertion,
     growth and the minimization; for frame 0 the start-up and the initial relaxation)."""
@@ -100,7 +102,7 @@ def run_driver(binary, inp, seed, work, phi_stop):
                 print(f"seed {seed}: growth step {steps[-1][0]}, {iterations} FIRE iterations, "
                       f"{steps[-1][2]:.1f} s, phi_patch ~ {phi:.4f}", flush=True)
                 tail.write(f"{now - start:.2f} {line}")
-                if phi <= phi_stop:
+                if phi <= phi_stop or (max_steps is not None and steps[-1][0] >= max_steps):
                     proc.terminate()
                     break
             if "ERROR" in line or "did not converge" in line:
@@ -142,14 +144,25 @@ def main():
     p.add_argument("out")
     p.add_argument("--work")
     p.add_argument("--phi-stop", type=float, default=0.45)
+    p.add_argument("--steps", type=int, help="stop after this many growth steps")
+    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help=f"replace a driver argument ({', '.join(ARGS)})")
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
     p.add_argument("--measure-only", action="store_true")
     p.add_argument("--data", help="package data file the input came from: compare its adhesive "
                    "bonds with those of the driver's frame 0")
     a = p.parse_args()
+    for item in a.set:
+        name, _, value = item.partition("=")
+        if name not in ARGS:
+            p.error(f"--set {item}: {name} is not a driver argument ({', '.join(ARGS)})")
+        try:
+            ARGS[name] = float(value)
+        except ValueError:
+            p.error(f"--set {item}: {value!r} is not a number")
     work = a.work or os.path.splitext(a.out)[0] + ".work"
     if not a.measure_only:
-        run_driver(os.path.abspath(a.binary), a.input, a.seed, work, a.phi_stop)
+        run_driver(os.path.abspath(a.binary), a.input, a.seed, work, a.phi_stop, a.steps)
     with open(os.path.join(work, "steps.txt")) as f:
         steps = [[float(w) for w in line.split()] for line in f if not line.startswith("#")]
     tissues, rows, pairs = measure(os.path.abspath(a.lmp), work)

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Interpenetrating cells after the first growth step at Fig 5's bending stiffnesses: the
+published code against the package, from the same tissue.
+
+    low_bending.py BINARY [--lmp build/lmp] [--work DIR] [--out low_bending.csv]
+
+BINARY is the driver build.sh made. From tissue_N16.data (through make_input.py), with Fig 5's
+base set (beta 100, theta0_min -3 pi/20) at P0 = 1e-5 (the pressure of fig5_coarse.sweep) and
+eps_b each value of EPS_B:
+
+  * published: the driver's frame 1 (run.py --steps 1: the relaxed input grown once and
+    minimized at P0; no bond breaks before it, so the seed does not matter), measured by
+    in.measure;
+  * package_published_rules: in.mesophyll's minimum 2 (-var steps 2) with the driver's cycle
+    (rules published, break_start 2, steer mass);
+  * package_sweep: the same with the protocol fig5_coarse.sweep ran (in.mesophyll's defaults:
+    its parameter set's rules code, break_start 1, steer force).
+
+Each row gives phi_patch, calA and z of that state and the pairs of cells whose outlines
+overlap as fix dpoly/check counts them (and the first pair it names).
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
+PARAMETERS = os.path.join(ROOT, "potentials", "fig5.mesophyll")
+EPS_B = ("0.01", "0.03", "0.1", "0.4", "0.6")
+P0 = "1e-5"
+THETA0_MIN_ARG = "0.3"    # the driver multiplies it by -pi/2: theta0_min = -3 pi/20
+PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var",
+                                             "break_start", "2", "-var", "steer", "mass"],
+                 "package_sweep": []}
+COLUMNS = ["eps_b", "code", "phi_patch", "calA", "z", "interpenetrating_pairs", "first_pair"]
+PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate \(first: cells (\d+) and (\d+)\)")
+PROGRESS = re.compile(r"^growth step 2/2: .* phi_patch (\S+) <calA> (\S+) <z> (\S+)")
+
+
+def pairs_in(line):
+    """(count, 'a-b') of fix dpoly/check's line, (0, '') where it names none."""
+    m = PAIRS.search(line or "")
+    return (int(m.group(1)), f"{m.group(2)}-{m.group(3)}") if m else (0, "")
+
+
+def published(binary, lmp, work, eps_b):
+    folder = os.path.join(work, f"published_{eps_b}")
+    out = folder + ".csv"
+    subprocess.run([sys.executable, os.path.join(HERE, "run.py"), binary,
+                    os.path.join(work, "tissue_N16.input"), "20261122", out, "--work", folder,
+                    "--steps", "1", "--lmp", lmp, "--data", TISSUE, "--set", f"kb0={eps_b}",
+                    "--set", f"t0_min={THETA0_MIN_ARG}", "--set", f"P0={P0}"],
+                   check=True, stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(out)))
+    frame = next(r for r in rows if r["growth_steps"] == "1")
+    # in.measure's fix dpoly/check lines, one per frame: the last is frame 1's
+    checks = [line for line in open(os.path.join(folder, "log.measure"))
+              if line.startswith("fix dpoly/check:")]
+    count, first = pairs_in(checks[-1])
+    if count != int(frame["interpenetrating_pairs"]):
+        sys.exit(f"{folder}: the check line and the CSV disagree on the pairs")
+    return [frame["phi_patch"], frame["calA"], frame["z"], count, first]
+
+
+def package(lmp, work, eps_b, mode):
+    folder = os.path.join(work, f"{mode}_{eps_b}")
+    os.makedirs(folder, exist_ok=True)
+    subprocess.run([lmp, "-in", os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll"),
+                    "-var", "N", "16", "-var", "tissue", TISSUE, "-var", "parameters",
+                    PARAMETERS, "-var", "set", "base", "-var", "eps_b", eps_b, "-var", "P0", P0,
+                    "-var", "ftol", "1e-11", "-var", "steps", "2", "-var", "restart_every", "0",
+                    "-log", "log.lammps", "-screen", "none"] + PACKAGE_MODES[mode],
+                   cwd=folder, check=True)
+    log = open(os.path.join(folder, "log.lammps")).read().splitlines()
+    state = next(PROGRESS.match(line).groups() for line in log if PROGRESS.match(line))
+    check = next(line for line in log if line.startswith("fix dpoly/check: minimum 2 "))
+    return list(state) + list(pairs_in(check))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("binary")
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--work", default="/tmp/low_bending")
+    p.add_argument("--out", default=os.path.join(HERE, "low_bending.csv"))
+    a = p.parse_args()
+    lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
+    os.makedirs(a.work, exist_ok=True)
+    subprocess.run([sys.executable, os.path.join(HERE, "make_input.py"), TISSUE,
+                    os.path.join(a.work, "tissue_N16.input")], check=True,
+                   stdout=subprocess.DEVNULL)
+    rows = []
+    for eps_b in EPS_B:
+        rows.append([eps_b, "published"] + published(binary, lmp, a.work, eps_b))
+        for mode in PACKAGE_MODES:
+            rows.append([eps_b, mode] + package(lmp, a.work, eps_b, mode))
+        print(f"eps_b {eps_b}: done", flush=True)
+    with open(a.out, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(COLUMNS)
+        w.writerows(rows)
+    width = max(len(c) for c in PACKAGE_MODES)
+    print(f"{'eps_b':6} {'code':{width}} phi_patch calA   z     pairs (first)")
+    for r in rows:
+        print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
+              f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
+    print(f"wrote {a.out}")
+
+
+if __name__ == "__main__":
+    main()
