@@ -238,6 +238,11 @@ def check_two_of_a_figure(scratch, fig6, fig5, out):
            "two Fig 6 sweeps: the base point is not borrowed from the first")
     expect(f"--fig5 {fig5} --fig6 {fig6} {other}`" in text,
            "two Fig 6 sweeps: the section does not give the command as run")
+    # the flag given twice: the same sweeps as one flag with two folders
+    result, again = report(["--fig6", fig6, "--fig6", other, "--fig5", fig5], doc, out)
+    expect(result.returncode == 0 and section_after(again, "### Directions") ==
+           section_after(text, "### Directions"),
+           "--fig6 A --fig6 B: not the report of --fig6 A B")
     result, _ = report(["--fig6", fig6, os.path.join(out, "fig6_t_summary.csv")], doc, out)
     expect(result.returncode != 0 and "two sweeps named fig6_t" in result.stderr,
            f"one sweep given twice: exit code {result.returncode}, {result.stderr.strip()}")

@@ -48,6 +48,8 @@ def main():
                 if text.count(section) != 1:
                     problems.append(f"rewrite {attempt}: {section.splitlines()[0]} kept "
                                     f"{text.count(section)} times")
+            if "\n".join(sections) not in text:
+                problems.append(f"rewrite {attempt}: no blank line between the kept sections")
             where = [text.find(s) for s in kept]
             if sorted(where) != where:
                 problems.append(f"rewrite {attempt}: the kept sections out of order")

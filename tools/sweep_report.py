@@ -64,7 +64,6 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
 # The runs must share the stopping rule too: phi_stop here; the growth-step cap "steps" may
 # differ only where no borrowed run reached the smaller cap (borrow_base checks it).
 BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set", "tmaxadapt")
-# the protocol whose defaults a run takes for the variables its sweep leaves unset
 
 
 # --- ensembles and the comparison rule ----------------------------------------------------------
@@ -353,17 +352,18 @@ class Sweep:
         rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
+        lender = fig6.run_record(rows[0])
         # a variable a run leaves unset takes its protocol's default
-        value = lambda s, record, name: record["variables"].get(  # noqa: E731
-            name, sweep.protocol_defaults(s.protocol).get(name))
+        settings = [dict(sweep.protocol_defaults(s.protocol), **r["variables"])
+                    for s, r in ((self, mine), (fig6, lender))]
         differ = [name for name in BORROW_RUN_VARIABLES
-                  if value(self, mine, name) != value(fig6, fig6.run_record(rows[0]), name)]
+                  if settings[0].get(name) != settings[1].get(name)]
         seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
         if differ or seeds_tissues(rows) != seeds_tissues(
                 [r for r in self.rows if r["point"] == self.rows[0]["point"]]):
             return (f"{self.name} has no base point; {fig6.name}'s P0 = {p0:g} runs differ in "
                     f"{', '.join(differ) or 'seeds or tissues'}: none borrowed.")
-        caps = (mine["variables"].get("steps"), fig6.run_record(rows[0])["variables"].get("steps"))
+        caps = (mine["variables"].get("steps"), lender["variables"].get("steps"))
         phi_stop = mine["variables"].get("phi_stop")
         cap_note = step_cap_note(rows, caps, phi_stop)
         if cap_note is None:
@@ -567,8 +567,8 @@ def section(sweeps, doc_dir, command, notes):
         f"beside the figures), checked run for run against the runs the sweep file plans "
         f"today: rows, cost, withdrawn runs and figures are that report's.")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
-             f"Made by `{command}` from the sweep folders of {files} (reduced grids of `fig4.sweep`, "
-             "`fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
+             f"Made by `{command}` from the sweep folders of {files} (reduced grids of "
+             "`fig4.sweep`, `fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
              f"and why it is reduced).{source} Every run has vertex insertion (the example's "
              "default). "
              "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
@@ -665,7 +665,7 @@ def write_section(doc, text):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     for kind in KINDS:
-        p.add_argument(f"--{kind}", metavar="DIR|CSV", nargs="+", default=[],
+        p.add_argument(f"--{kind}", metavar="DIR|CSV", nargs="+", action="extend", default=[],
                        help=f"sweep folder of {kind}*.sweep, or the <name>_summary.csv a "
                             f"report archived from one; several: each gets the figure's "
                             f"directions, the first lends its base point")

@@ -305,7 +305,8 @@ def rewrite(path, lines):
     the comparison with the published code (part D, --published) and the 3d section, as they
     were."""
     _, kept = split_published_section(path)
-    sweeps = "".join(marked_section(path, begin, end) for begin, end in AFTER_PART_C)
+    sweeps = "\n".join(s for s in (marked_section(path, begin, end)
+                                   for begin, end in AFTER_PART_C) if s)
     threed = marked_section(path, THREED_BEGIN, THREED_END)
     if threed:  # written by hand: split_published_section left it in the text it drops
         kept += threed
