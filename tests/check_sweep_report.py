@@ -12,8 +12,9 @@ a copy of a validation.md. Checks, against means and standard errors computed he
   * P0 = 5e-2 compacts: holds, from the two ok runs only; the third run of that point has a
     ring that crosses itself (a FAILED check line) and an absurd delta_phi_plus, and must be
     counted as failed, never averaged;
-  * P0 up to 1e-3 hardly matters: no difference resolved (the 1e-5 runs differ from the 1e-3
-    ones by less than two standard errors), which the line must not call "holds";
+  * P0 up to 1e-3 hardly matters: no difference resolved (the 1e-5 and 1e-7 runs differ from
+    the 1e-3 ones by less than two standard errors), which the line must not call "holds";
+    every lower pressure of the sweep is compared;
   * low eps_b compacts: the opposite is resolved (its runs compact less); low beta compacts:
     not resolved (equal means);
   * the Fig 5 sweep borrows the Fig 6 sweep's P0 = 1e-5 runs as its base point (same step cap); one
@@ -29,9 +30,11 @@ a copy of a validation.md. Checks, against means and standard errors computed he
   * archives: the report read back from the CSVs a report archived (OUT/<name>_summary.csv)
     gives the same directions, tables, costs and withdrawn runs as the report of the folders,
     borrowing included; an archive whose sweep file now plans other runs is refused; a base
-    point is borrowed only where tmaxadapt agrees (unset reads as the protocol's 'no');
+    point is borrowed only where tmaxadapt agrees (unset reads as the protocol's default: 'no'
+    for in.mesophyll, 'yes' for a sweep whose own protocol says so);
   * two sweeps of one figure: each gets the figure's directions and table, the first lends the
-    base point; a sweep given twice is refused;
+    base point; the flag given twice reads as one; the section names each sweep by the file
+    it was planned from; a sweep given twice is refused;
   * bad input: no sweep, a folder without runs, a file that is not <name>_summary.csv, a
     missing archive.
 Exit 77 (skipped) without python3-matplotlib, which the figures need.
@@ -54,7 +57,7 @@ problems = []
 
 # delta_phi_plus of each run, by point and seed (seed 3 of P0 = 5e-2 is the failed run)
 DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.06, 10.0],
-        "P0=1e-5": [0.0015, 0.0025, 0.0030],
+        "P0=1e-5": [0.0015, 0.0025, 0.0030], "P0=1e-7": [0.0012, 0.0021, 0.0033],
         "beta=30 eps_b=0.4": [0.0015, 0.0025, 0.0030],
         "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002]}
 FAILED = ("P0=5e-2", "3")
@@ -66,10 +69,11 @@ def expect(condition, message):
     return condition
 
 
-def plan(scratch, name, parameters, points, fixed):
+def plan(scratch, name, parameters, points, fixed, protocol=None):
     path = os.path.join(scratch, f"{name}.sweep")
     with open(path, "w") as f:
         f.write(f"name {name}\nparameters {os.path.join(ROOT, 'potentials', parameters)}\n"
+                + (f"protocol {protocol}\n" if protocol else "") +
                 f"set base\n" + "".join(f"point {p}\n" for p in points) +
                 f"seeds 1 2 3\ntissue {TISSUE}\nfixed {fixed}\n")
     folder = os.path.join(scratch, name)
@@ -126,6 +130,12 @@ def mean_se(values):
     return m, sd / math.sqrt(len(values))
 
 
+def mean_se_text(values):
+    """A mean and its standard error as the report prints them."""
+    m, se = mean_se(values)
+    return f"{m:.4g} +- {se:.2g} (n = {len(values)})"
+
+
 def line_of(text, title):
     found = [line for line in text.splitlines() if line.startswith(f"- *{title}*")]
     expect(len(found) == 1, f"the section has {len(found)} lines for '{title}'")
@@ -151,10 +161,12 @@ def check_claim(text, title, point, other, verdict, counts=None):
 
 class StubSweep:
     """What claim_line, unchanged_lines and optimal_lines read of a sweep: a name, its figure,
-    the Ensemble at grid values, and the points in order."""
+    its rows, the Ensemble at grid values, and the points in order."""
 
     def __init__(self, report, name, points, kind="fig6"):
         self.name, self.kind = name, kind
+        self.rows = [dict(r, **{k: f"{x:g}" for k, x in values.items()})
+                     for values, rows in points for r in rows]
         self.table = [(values, report.Ensemble(rows, {"ok"})) for values, rows in points]
 
     def at(self, **values):
@@ -185,7 +197,7 @@ def check_verdict_rules():
         ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
         ({"P0": 1e-5}, runs("delta_A_early", [1.0, 1.02, 1.04])),
         ({"P0": 1e-4}, runs("delta_A_early", [5.0]) + runs("delta_A_early", [9.0], "failed"))])
-    lines = report.unchanged_lines(close, [{"P0": 1e-5}, {"P0": 1e-4}], {"P0": 1e-3})
+    lines = report.unchanged_lines(close, {"P0": 1e-3})
     head = lines[0]
     expect("no difference resolved at 2 standard errors" in head and "**holds**" not in head
            and "does not hold" not in head and "in 1 comparison " in head,
@@ -228,6 +240,10 @@ def check_two_of_a_figure(scratch, fig6, fig5, out):
     shutil.copytree(fig6, other)
     result, text = report(["--fig6", fig6, other, "--fig5", fig5], doc, out)
     expect(result.returncode == 0, f"two Fig 6 sweeps: {result.stderr}")
+    # each sweep by the file its folder was planned from (fig6_u is a copy of fig6_t's folder)
+    files = [f"`{os.path.join(scratch, name)}.sweep`" for name in ("fig5_t", "fig6_t")]
+    expect(f"from the sweep folders of {files[0]}, {files[1]} and {files[1]} (" in text,
+           "two Fig 6 sweeps: the section does not name the sweep files the folders came from")
     for name in ("fig6_t", "fig6_u"):
         compacts = [line for line in text.splitlines()
                     if line.startswith(f"- *P0 = 5e-2 compacts* (delta_phi_plus; {name})")]
@@ -265,8 +281,10 @@ def check_archives(scratch, fig6, from_folders_of, out):
         expect(folders_part and folders_part == section_after(from_archives,
                                                               "### Directions of the paper"),
                f"{name}: the report of the archives differs from that of the folders")
-        expect(f"{name} and fig6_t are read back from the summary" in from_archives,
+        expect(f"{name} and fig6_t are read back from the summaries" in from_archives,
                f"{name}: the section does not say that its sweeps came from archives")
+        expect(f"`{os.path.join(scratch, name)}.sweep`" in from_archives,
+               f"{name}: the section does not name the sweep file of --sweeps")
     expect("Withdrawn: run 1 of fig5_cap" in from_archives and
            os.path.exists(os.path.join(out, "fig5_cap_withdrawn.csv")),
            "the archive of fig5_cap lost its withdrawn run")
@@ -293,6 +311,23 @@ def check_archives(scratch, fig6, from_folders_of, out):
         expect(result.returncode == 0 and borrowed == borrows and refused != borrows,
                f"tmaxadapt {value}: borrowed {borrowed}, refused {refused}, expected "
                f"borrowed {borrows}: {result.stderr}")
+    # a sweep on its own protocol, whose default is tmaxadapt yes: its runs leave tmaxadapt
+    # unset, as fig6_t's do, but read 'yes' from that protocol, so they borrow nothing
+    protocol = os.path.join(scratch, "protocol", "in.mesophyll")
+    os.makedirs(os.path.dirname(protocol))
+    text = open(os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll")).read()
+    default = re.compile(r"^(variable\s+tmaxadapt\s+index\s+)no\b", re.MULTILINE)
+    expect(len(default.findall(text)) == 1, "in.mesophyll: no 'variable tmaxadapt index no'")
+    with open(protocol, "w") as f:
+        f.write(default.sub(r"\g<1>yes", text))
+    folder = plan(scratch, "fig5_own", "fig5.mesophyll", ["beta=30 eps_b=0.4"],
+                  "steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11", protocol)
+    fake_results(folder)
+    result, text = report(["--fig6", fig6, "--fig5", folder], doc, out)
+    expect(result.returncode == 0 and "fig5_own has no base point; fig6_t's P0 = 1e-05 runs "
+           "differ in tmaxadapt: none borrowed" in text,
+           f"a sweep whose own protocol defaults to tmaxadapt yes borrowed from one that runs "
+           f"'no': {result.stderr}")
 
 
 def main():
@@ -301,7 +336,8 @@ def main():
     scratch = tempfile.mkdtemp(prefix="sweep_report_")
     try:
         fig6 = plan(scratch, "fig6_t", "fig6.mesophyll",
-                    ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11"],
+                    ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11",
+                     "P0=1e-7 ftol=1e-11"],
                     "steps 3 phi_stop 0.45")
         fig5 = plan(scratch, "fig5_t", "fig5.mesophyll",
                     ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
@@ -352,6 +388,10 @@ def main():
         unchanged = line_of(text, "P0 up to 1e-3 hardly matters")
         expect("no difference resolved" in unchanged and "**holds**" not in unchanged,
                f"P0 up to 1e-3: not 'no difference resolved': {unchanged}")
+        expect("in 2 comparisons" in unchanged and "6 without spread" in unchanged and all(
+                   f"delta_phi_plus: {mean_se_text(DPHI[p])} at P0 = {v} against" in text
+                   for p, v in (("P0=1e-5", "1e-05"), ("P0=1e-7", "1e-07"))),
+               f"P0 up to 1e-3: not each lower pressure of the sweep compared: {unchanged}")
         expect("fig5_t's base point" in text and "fig6_t's P0 = 1e-05 point" in text,
                "the Fig 5 sweep did not borrow the Fig 6 sweep's P0 = 1e-5 runs")
         expect("both cap growth at 3 steps" in text, "the borrowing does not name the step cap")

@@ -195,6 +195,16 @@ def planned_protocol(folder, run):
     sys.exit(f"{folder}/plan.lmp names no protocol: not a folder of tools/sweep.py plan")
 
 
+def planned_sweep_file(folder):
+    """The sweep file a planned folder was made from (plan.lmp's first line names it relative
+    to the package's folder)."""
+    with open(os.path.join(folder, "plan.lmp")) as f:
+        words = f.readline().split()
+    if words[:2] != ["#", "sweep"] or len(words) < 5 or words[3] != "from":
+        sys.exit(f"{folder}/plan.lmp names no sweep file: not a folder of tools/sweep.py plan")
+    return os.path.normpath(os.path.join(ROOT, words[4].rstrip(":")))
+
+
 def path_from(folder, path):
     """path as the run folder sees it: relative when both lie in one tree (the package's, or a
     sweep folder's next to its files), so that the two move together; else absolute."""

@@ -9,7 +9,7 @@ doc/validation.md with a verdict on each direction the paper states.
 Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
 partly run) with examples/sweep/in.sweep. A figure may have several sweeps (e.g. fig6_coarse
 and fig6_N32, the same pressures at 16 and 32 cells): each gets the figure's directions, and
-the first is the one a base point is borrowed from. For each: `tools/sweep.py summary DIR`, its
+the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. For each: `tools/sweep.py summary DIR`, its
 summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, its withdrawn
 runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv, the figures of
 tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's highlighted points
@@ -182,6 +182,17 @@ def withdrawn_runs(folder):
 WITHDRAWN_COLUMNS = ["run", "reason", "loop_s"]
 
 
+def shown(path):
+    """path as typed from the package's folder where it lies inside, else absolute."""
+    path = os.path.abspath(path)
+    return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
+
+
+def listed(words):
+    """'a', 'a and b', 'a, b and c'."""
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
 def archive_name(path):
     """The sweep's name when path is an archived summary <name>_summary.csv, else None."""
     base = os.path.basename(path)
@@ -215,6 +226,7 @@ class Sweep:
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
         self.name = os.path.basename(os.path.abspath(folder))
         self.protocol = sweep.planned_protocol(folder, self.rows[0]["run"])
+        self.sweep_file = shown(sweep.planned_sweep_file(folder))
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
 
@@ -227,6 +239,7 @@ class Sweep:
             sys.exit(f"sweep_report: {path} is the archive of sweep {self.name}, but its sweep "
                      f"file {sweep_file} does not exist")
         definition, _, planned = sweep.planned_runs(sweep_file)
+        self.sweep_file = shown(sweep_file)
         self.protocol = definition.protocol
         self.records = {}
         for run in planned:
@@ -450,15 +463,18 @@ def reach_note(e):
             f"{phi_final:.3f} (nearest 0.5: {phi_half:.3f})")
 
 
-def unchanged_lines(sweep, values_list, reference):
-    """'P0 up to 1e-3 hardly matters': each lower pressure against the reference one, for each
-    quantity of the figure. No resolved difference is not a shown equality: the verdict says
-    so, and how large a difference would have been resolved (RESOLVED standard errors)."""
+def unchanged_lines(sweep, reference):
+    """'P0 up to 1e-3 hardly matters': each lower pressure of the sweep (in the order of its
+    plan) against the reference one, for each quantity of the figure. No resolved difference
+    is not a shown equality: the verdict says so, and how large a difference would have been
+    resolved (RESOLVED standard errors)."""
     if sweep is None:
         return ["- *P0 up to 1e-3 hardly matters*: not run (no Fig 6 sweep folder given)."]
     b = sweep.at(**reference)
+    lower = [{"P0": p} for p in dict.fromkeys(float(r["P0"]) for r in sweep.rows)
+             if p < reference["P0"]]
     lines, counts = [], {}
-    for values in values_list:
+    for values in lower:
         a = sweep.at(**values)
         if a is None or b is None:
             continue
@@ -498,7 +514,7 @@ def optimal_lines(sweeps):
     every other point. No point resolved lower is not a shown optimum: the line says so, and
     how many points could be compared at all."""
     lines = []
-    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind)):
+    for sweep in sweeps:    # in the order of KINDS, as main() builds them
         kind = sweep.kind
         base = sweep.at(**BASE[kind])
         if base is None:
@@ -558,18 +574,20 @@ def points_table(sweep):
 def section(sweeps, doc_dir, command, notes):
     rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
     archived = [s.name for s in sweeps if s.archived]
-    names = [f"`{s.name}.sweep`" for s in sweeps]
-    names[0] = f"`examples/sweep/{sweeps[0].name}.sweep`"
-    files = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+    files = listed([f"`{s.sweep_file}`" for s in sweeps])
+    many = len(archived) > 1
+    whose = "those reports'" if many else "that report's"
     source = "" if not archived else (
-        f" {' and '.join(archived)} {'are' if len(archived) > 1 else 'is'} read back from the "
-        f"summary an earlier report archived from the sweep folder (`<name>_summary.csv` "
-        f"beside the figures), checked run for run against the runs the sweep file plans "
-        f"today: rows, cost, withdrawn runs and figures are that report's.")
+        f" {listed(archived)} {'are' if many else 'is'} read back from the "
+        f"{'summaries' if many else 'summary'} earlier reports archived from "
+        f"{'their sweep folders' if many else 'its sweep folder'} (`<name>_summary.csv` "
+        f"beside the figures), checked run for run against the runs "
+        f"{'their sweep files plan' if many else 'its sweep file plans'} today: rows, cost, "
+        f"withdrawn runs and figures are {whose}.")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of {files} (reduced grids of "
-             "`fig4.sweep`, `fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; each file says how "
-             f"and why it is reduced).{source} Every run has vertex insertion (the example's "
+             "`fig4.sweep`, `fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; "
+             f"each file says how and why it is reduced).{source} Every run has vertex insertion (the example's "
              "default). "
              "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
              "`tools/sweep.py summary`: only *ok* runs enter the means; a *failed* run (rings "
@@ -605,7 +623,7 @@ def section(sweeps, doc_dir, command, notes):
         lines.append(claim_line("few contacts at small delta_a", f4,
                                 {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "z_half", -1))
     for f6 in of("fig6"):
-        lines += unchanged_lines(f6, [{"P0": 1e-5}, {"P0": 1e-4}], BASE["fig6"])
+        lines += unchanged_lines(f6, BASE["fig6"])
         lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
                                 "delta_phi_plus", +1))
         lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
@@ -663,12 +681,14 @@ def write_section(doc, text):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=" ".join(__doc__.split("\n\n")[0].split()))
     for kind in KINDS:
+        lends = ("; the first lends its P0 points to the Fig 4 and 5 sweeps that lack their "
+                 "base point" if kind == "fig6" else "")
         p.add_argument(f"--{kind}", metavar="DIR|CSV", nargs="+", action="extend", default=[],
                        help=f"sweep folder of {kind}*.sweep, or the <name>_summary.csv a "
-                            f"report archived from one; several: each gets the figure's "
-                            f"directions, the first lends its base point")
+                            f"report archived from one; several (or the flag again): each gets "
+                            f"the figure's directions{lends}")
     p.add_argument("--sweeps", default=os.path.join(ROOT, "examples", "sweep"),
                    help="where an archive's sweep file <name>.sweep lies")
     p.add_argument("--out", default=os.path.join(ROOT, "validation", "sweeps"))
@@ -697,9 +717,6 @@ def main():
               for kind, source in given]
     fig6 = next((s for s in sweeps if s.kind == "fig6"), None)
     notes = [s.borrow_base(fig6) for s in sweeps if s.kind != "fig6"]
-    def shown(folder):    # as typed from the package's folder, where it lies inside
-        path = os.path.abspath(folder)
-        return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
     command = "tools/sweep_report.py " + " ".join(
         f"--{kind} " + " ".join(shown(s) for s in getattr(args, kind))
         for kind in KINDS if getattr(args, kind))

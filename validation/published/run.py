@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Run the published driver (readInMesoNetwork2D, built by build.sh) with the package's default
-parameter set on one seed, and write its trajectory as a CSV measured by the package itself.
+parameter set (or values given with --set) on one seed, and write its trajectory as a CSV
+measured by the package itself.
 
     run.py BINARY INPUT SEED OUT.csv [--work DIR] [--phi-stop 0.45] [--steps K]
            [--set NAME=VALUE ...] [--lmp build/lmp] [--measure-only]
@@ -137,7 +138,7 @@ def measure(lmp, work):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=" ".join(__doc__.split("\n\n")[0].split()))
     p.add_argument("binary")
     p.add_argument("input")
     p.add_argument("seed", type=int)
@@ -152,6 +153,10 @@ def main():
     p.add_argument("--data", help="package data file the input came from: compare its adhesive "
                    "bonds with those of the driver's frame 0")
     a = p.parse_args()
+    if a.steps is not None and a.steps < 1:
+        p.error(f"--steps {a.steps}: give at least 1 growth step")
+    if a.measure_only and (a.set or a.steps is not None):
+        p.error("--measure-only measures frames already made: --set and --steps do not apply")
     for item in a.set:
         name, _, value = item.partition("=")
         if name not in ARGS:
