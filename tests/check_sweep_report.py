@@ -61,6 +61,8 @@ DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.06, 10.0],
         "beta=30 eps_b=0.4": [0.0015, 0.0025, 0.0030],
         "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002]}
 FAILED = ("P0=5e-2", "3")
+FIG6_POINTS = ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11",
+               "P0=1e-7 ftol=1e-11"]
 
 
 def expect(condition, message):
@@ -232,17 +234,18 @@ def report(args, doc, out, sweeps=None):
 
 
 def check_two_of_a_figure(scratch, fig6, fig5, out):
-    """Two Fig 6 sweeps (a copy of fig6_t's folder as fig6_u): each gets the figure's
-    directions and its own table, the first lends the base point; one sweep given twice is
-    refused (its files in OUT would overwrite each other)."""
+    """Two Fig 6 sweeps (fig6_u, planned from its own file with fig6_t's grid): each gets the
+    figure's directions and its own table, the first lends the base point; one sweep given
+    twice is refused (its files in OUT would overwrite each other), also as a copy of its
+    folder under another name, which keeps the sweep's name."""
     doc = os.path.join(scratch, "doc", "validation.md")
-    other = os.path.join(scratch, "fig6_u")
-    shutil.copytree(fig6, other)
+    other = plan(scratch, "fig6_u", "fig6.mesophyll", FIG6_POINTS, "steps 3 phi_stop 0.45")
+    fake_results(other)
     result, text = report(["--fig6", fig6, other, "--fig5", fig5], doc, out)
     expect(result.returncode == 0, f"two Fig 6 sweeps: {result.stderr}")
-    # each sweep by the file its folder was planned from (fig6_u is a copy of fig6_t's folder)
-    files = [f"`{os.path.join(scratch, name)}.sweep`" for name in ("fig5_t", "fig6_t")]
-    expect(f"from the sweep folders of {files[0]}, {files[1]} and {files[1]} (" in text,
+    # each sweep by the file its folder was planned from
+    files = [f"`{os.path.join(scratch, name)}.sweep`" for name in ("fig5_t", "fig6_t", "fig6_u")]
+    expect(f"from the sweep folders of {files[0]}, {files[1]} and {files[2]} (" in text,
            "two Fig 6 sweeps: the section does not name the sweep files the folders came from")
     for name in ("fig6_t", "fig6_u"):
         compacts = [line for line in text.splitlines()
@@ -262,7 +265,28 @@ def check_two_of_a_figure(scratch, fig6, fig5, out):
     result, _ = report(["--fig6", fig6, os.path.join(out, "fig6_t_summary.csv")], doc, out)
     expect(result.returncode != 0 and "two sweeps named fig6_t" in result.stderr,
            f"one sweep given twice: exit code {result.returncode}, {result.stderr.strip()}")
-    shutil.rmtree(other)
+    # a copy of fig6_t's folder under another name is still sweep fig6_t
+    copy = os.path.join(scratch, "fig6_copy")
+    shutil.copytree(fig6, copy)
+    result, _ = report(["--fig6", fig6, copy], doc, out)
+    expect(result.returncode != 0 and "two sweeps named fig6_t" in result.stderr,
+           f"a copied sweep folder: exit code {result.returncode}, {result.stderr.strip()}")
+    result, text = report(["--fig6", copy], doc, out)
+    expect(result.returncode == 0 and "**fig6_t** (fig6)" in text and "fig6_copy**" not in text,
+           f"a renamed sweep folder is not reported as its sweep, fig6_t: {result.stderr}")
+    shutil.rmtree(copy)
+    # a further Fig 6 sweep without P0 = 5e-2 has no lines about that point; alone it has
+    ends = plan(scratch, "fig6_v", "fig6.mesophyll", ["P0=1e-3 ftol=1e-10", "P0=1e-7 ftol=1e-11"],
+                "steps 3 phi_stop 0.45")
+    fake_results(ends)
+    missing = "not run (fig6_v has no point P0 = 0.05)"
+    result, text = report(["--fig6", fig6, ends], doc, out)
+    expect(result.returncode == 0 and missing not in text and
+           "*P0 up to 1e-3 hardly matters* (fig6_v)" in text,
+           "a second Fig 6 sweep without P0 = 5e-2: 'not run' lines, or no lines of its own")
+    result, text = report(["--fig6", ends], doc, out)
+    expect(result.returncode == 0 and text.count(missing) == 2,
+           "the only Fig 6 sweep without P0 = 5e-2 does not say so")
 
 
 def check_archives(scratch, fig6, from_folders_of, out):
@@ -335,10 +359,7 @@ def main():
     os.environ["MESOPHYLL_MISSING_EXIT"] = "77"    # sweep_plot.py without matplotlib: skip
     scratch = tempfile.mkdtemp(prefix="sweep_report_")
     try:
-        fig6 = plan(scratch, "fig6_t", "fig6.mesophyll",
-                    ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11",
-                     "P0=1e-7 ftol=1e-11"],
-                    "steps 3 phi_stop 0.45")
+        fig6 = plan(scratch, "fig6_t", "fig6.mesophyll", FIG6_POINTS, "steps 3 phi_stop 0.45")
         fig5 = plan(scratch, "fig5_t", "fig5.mesophyll",
                     ["beta=30 eps_b=0.4", "beta=100 eps_b=0.01"],
                     "steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11")
@@ -432,6 +453,12 @@ def main():
         expect(statuses.count("unconverged") == 1 and statuses.count("failed") == 0,
                f"fig5_p4: one run at the iteration limit gives statuses {statuses}, not one "
                f"unconverged")
+        # an option that changes the section is part of the command the section gives
+        result, text = report(["--fig6", fig6, "--fig5", fig5_other, "--accept", "unconverged"],
+                              doc, out)
+        expect(result.returncode == 0 and
+               f"Made by `tools/sweep_report.py --fig5 {fig5_other} --fig6 {fig6} --accept "
+               f"unconverged`" in text, "--accept unconverged is missing from the command given")
         check_two_of_a_figure(scratch, fig6, fig5, out)
         check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
         # bad input: no folder, a folder without runs, a file that is no archive, a missing one

@@ -195,14 +195,17 @@ def planned_protocol(folder, run):
     sys.exit(f"{folder}/plan.lmp names no protocol: not a folder of tools/sweep.py plan")
 
 
-def planned_sweep_file(folder):
-    """The sweep file a planned folder was made from (plan.lmp's first line names it relative
-    to the package's folder)."""
-    with open(os.path.join(folder, "plan.lmp")) as f:
-        words = f.readline().split()
-    if words[:2] != ["#", "sweep"] or len(words) < 5 or words[3] != "from":
-        sys.exit(f"{folder}/plan.lmp names no sweep file: not a folder of tools/sweep.py plan")
-    return os.path.normpath(os.path.join(ROOT, words[4].rstrip(":")))
+def planned_sweep(folder):
+    """(name, sweep file) of a planned folder, as plan.lmp's first line gives them (the file
+    relative to the package's folder): the name is the sweep's, whatever the folder is called."""
+    plan_file = os.path.join(folder, "plan.lmp")
+    if not os.path.isfile(plan_file):
+        sys.exit(f"{folder} has no plan.lmp: not a folder of tools/sweep.py plan")
+    with open(plan_file) as f:
+        found = re.match(r"# sweep (\S+) from (.+): \d+ runs ", f.readline())
+    if found is None:
+        sys.exit(f"{folder}/plan.lmp names no sweep: not a folder of tools/sweep.py plan")
+    return found.group(1), os.path.normpath(os.path.join(ROOT, found.group(2)))
 
 
 def path_from(folder, path):
@@ -328,8 +331,8 @@ def plan(args):
         f.write(f"variable protocol string {path_from(first, sweep.protocol)}\n")
         f.write(f'variable sweep_state string "{python} {tool} state"\n')
         f.write(f'variable sweep_finish string "{python} {tool} finish"\n')
-    print(f"{len(runs)} runs of sweep {sweep.name} ({len(sweep.grid())} points x {len(sweep.tissues)} "
-          f"tissues x {len(sweep.seeds)} seeds) in {args.dir}")
+    print(f"{len(runs)} runs of sweep {sweep.name} ({len(sweep.grid())} points x "
+          f"{len(sweep.tissues)} tissues x {len(sweep.seeds)} seeds) in {args.dir}")
 
 
 # --- before and after each run (in its folder) ----------------------------------------------------

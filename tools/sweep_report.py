@@ -9,16 +9,17 @@ doc/validation.md with a verdict on each direction the paper states.
 Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
 partly run) with examples/sweep/in.sweep. A figure may have several sweeps (e.g. fig6_coarse
 and fig6_N32, the same pressures at 16 and 32 cells): each gets the figure's directions, and
-the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. For each: `tools/sweep.py summary DIR`, its
-summary.csv and points.csv copied to OUT/<sweep>_summary.csv and _points.csv, its withdrawn
-runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv, the figures of
-tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's highlighted points
-ringed and ensemble calA curves of those points; Fig 6: delta_A and delta_phi_plus against P0
-and the calA curves), and what the sweep cost (runs, loop seconds, wall time). Then the
-section between SECTION_BEGIN and SECTION_END of --doc is replaced (appended the first time):
-per direction of the paper, the ensemble means, their standard errors, and the verdict by the
-rule of compare() below. Nothing in the section is typed by hand; a sweep left out or not
-run yields "not run". Needs python3-numpy and python3-matplotlib (for the figures).
+the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. For each:
+`tools/sweep.py summary DIR`, its summary.csv and points.csv copied to OUT/<sweep>_summary.csv
+and _points.csv, its withdrawn runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv,
+the figures of tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's
+highlighted points ringed and ensemble calA curves of those points; Fig 6: delta_A and
+delta_phi_plus against P0 and the calA curves), and what the sweep cost (runs, loop seconds,
+wall time). Then the section between SECTION_BEGIN and SECTION_END of --doc is replaced
+(appended the first time): per direction of the paper, the ensemble means, their standard
+errors, and the verdict by the rule of compare() below. Nothing in the section is typed by
+hand; a sweep left out or not run yields "not run". Needs python3-numpy and python3-matplotlib
+(for the figures).
 
 A CSV in place of a DIR is such an archive, OUT/<sweep>_summary.csv, read back where the sweep
 folder is gone (sweep folders hold gigabytes of dumps and stay on the machine that ran them):
@@ -31,6 +32,7 @@ import csv
 import json
 import math
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -42,6 +44,7 @@ import sweep  # noqa: E402  (the parameter-file reader)
 
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 PLOT = os.path.join(ROOT, "tools", "sweep_plot.py")
+SWEEP_FILES = os.path.join(ROOT, "examples", "sweep")    # where an archive's sweep file lies
 KINDS = ("fig4", "fig5", "fig6")
 SECTION_BEGIN = "<!-- sweeps: tools/sweep_report.py -->"
 SECTION_END = "<!-- /sweeps -->"
@@ -126,6 +129,14 @@ def compare(a, b, quantity, sign):
     score = diff / se if se > 0 else (math.inf if diff > 0 else -math.inf)
     verdict = "holds" if score > RESOLVED else "opposite" if score < -RESOLVED else "not resolved"
     return verdict, ma, sa, na, mb, sb, nb, score
+
+
+def number(text):
+    """float(text), or None where the summary's cell is empty or missing."""
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
 
 
 def same_value(text, value):
@@ -224,9 +235,9 @@ class Sweep:
         extra = [a for k in self.accept if k != "ok" for a in ("--accept", k)]
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
-        self.name = os.path.basename(os.path.abspath(folder))
+        self.name = sweep.planned_sweep(folder)[0]
         self.protocol = sweep.planned_protocol(folder, self.rows[0]["run"])
-        self.sweep_file = shown(sweep.planned_sweep_file(folder))
+        self.sweep_file = shown(sweep.planned_sweep(folder)[1])
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
 
@@ -440,7 +451,8 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             "equal": f"**cannot be told**: every run of both gives {quantity} = "
                      f"{fmt(ma, 'g')}, so these runs cannot show a difference"
                      + (" (the runs stop once phi_patch falls below phi_stop, and none "
-                        "compacted before that: this protocol cannot show compaction here)" if quantity == "delta_phi_plus" else ""),
+                        "compacted before that: this protocol cannot show compaction here)"
+                        if quantity == "delta_phi_plus" else ""),
             "not near 0.5": f"**cannot be told**: the runs of a point ended before phi_patch "
                             f"came within {NEAR_HALF:g} of 0.5, so z is compared at different "
                             f"stages",
@@ -471,8 +483,8 @@ def unchanged_lines(sweep, reference):
     if sweep is None:
         return ["- *P0 up to 1e-3 hardly matters*: not run (no Fig 6 sweep folder given)."]
     b = sweep.at(**reference)
-    lower = [{"P0": p} for p in dict.fromkeys(float(r["P0"]) for r in sweep.rows)
-             if p < reference["P0"]]
+    pressures = dict.fromkeys(number(r.get("P0")) for r in sweep.rows)    # in plan order
+    lower = [{"P0": p} for p in pressures if p is not None and p < reference["P0"]]
     lines, counts = [], {}
     for values in lower:
         a = sweep.at(**values)
@@ -503,8 +515,9 @@ def unchanged_lines(sweep, reference):
         verdict = f"**does not hold**: {resolved} of {tested} differences resolved"
     else:
         verdict = (f"**no difference resolved at {RESOLVED:g} standard errors** in {tested} "
-                   f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not shown: a difference smaller "
-                   f"than {RESOLVED:g} SE of the difference, given per line, could be there)")
+                   f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not "
+                   f"shown: a difference smaller than {RESOLVED:g} SE of the difference, given "
+                   f"per line, could be there)")
     return [f"- *P0 up to 1e-3 hardly matters* ({sweep.name}): {verdict}"
             + (f"; not compared: {', '.join(left)}" if left else "") + ":"] + lines
 
@@ -514,7 +527,7 @@ def optimal_lines(sweeps):
     every other point. No point resolved lower is not a shown optimum: the line says so, and
     how many points could be compared at all."""
     lines = []
-    for sweep in sweeps:    # in the order of KINDS, as main() builds them
+    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind)):
         kind = sweep.kind
         base = sweep.at(**BASE[kind])
         if base is None:
@@ -587,8 +600,8 @@ def section(sweeps, doc_dir, command, notes):
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of {files} (reduced grids of "
              "`fig4.sweep`, `fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; "
-             f"each file says how and why it is reduced).{source} Every run has vertex insertion (the example's "
-             "default). "
+             f"each file says how and why it is reduced).{source} Every run has vertex "
+             "insertion (the example's default). "
              "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
              "`tools/sweep.py summary`: only *ok* runs enter the means; a *failed* run (rings "
              "that cross themselves or are inverted, non-finite values) is counted, never "
@@ -622,8 +635,10 @@ def section(sweeps, doc_dir, command, notes):
                                 +1))
         lines.append(claim_line("few contacts at small delta_a", f4,
                                 {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "z_half", -1))
-    for f6 in of("fig6"):
+    for k, f6 in enumerate(of("fig6")):
         lines += unchanged_lines(f6, BASE["fig6"])
+        if k and f6.at(P0=5e-2) is None:
+            continue    # a further Fig 6 sweep without the point (fig6_ends): nothing to say
         lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
                                 "delta_phi_plus", +1))
         lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
@@ -689,7 +704,7 @@ def main():
                        help=f"sweep folder of {kind}*.sweep, or the <name>_summary.csv a "
                             f"report archived from one; several (or the flag again): each gets "
                             f"the figure's directions{lends}")
-    p.add_argument("--sweeps", default=os.path.join(ROOT, "examples", "sweep"),
+    p.add_argument("--sweeps", default=SWEEP_FILES,
                    help="where an archive's sweep file <name>.sweep lies")
     p.add_argument("--out", default=os.path.join(ROOT, "validation", "sweeps"))
     p.add_argument("--doc", default=os.path.join(ROOT, "doc", "validation.md"))
@@ -706,7 +721,7 @@ def main():
         elif not os.path.isdir(os.path.join(source, "runs")):
             p.error(f"--{kind} {source}: neither a sweep folder with runs/ (plan and run the "
                     f"sweep first) nor an archived <name>_summary.csv")
-    names = [archive_name(s) if os.path.isfile(s) else os.path.basename(os.path.abspath(s))
+    names = [archive_name(s) if os.path.isfile(s) else sweep.planned_sweep(s)[0]
              for _, s in given]
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:    # their CSVs and figures in OUT would overwrite each other
@@ -717,9 +732,14 @@ def main():
               for kind, source in given]
     fig6 = next((s for s in sweeps if s.kind == "fig6"), None)
     notes = [s.borrow_base(fig6) for s in sweeps if s.kind != "fig6"]
-    command = "tools/sweep_report.py " + " ".join(
-        f"--{kind} " + " ".join(shown(s) for s in getattr(args, kind))
-        for kind in KINDS if getattr(args, kind))
+    # the command as typed from the package's folder, with every option that changes the
+    # section (not --out and --doc, where it goes), so that it can be run again
+    words = [w for kind in KINDS if getattr(args, kind)
+             for w in [f"--{kind}"] + [shown(s) for s in getattr(args, kind)]]
+    words += [w for status in args.accept[1:] for w in ("--accept", status)]
+    if os.path.abspath(args.sweeps) != os.path.abspath(SWEEP_FILES):
+        words += ["--sweeps", shown(args.sweeps)]
+    command = "tools/sweep_report.py " + " ".join(shlex.quote(w) for w in words)
     write_section(args.doc, section(sweeps, os.path.dirname(os.path.abspath(args.doc)),
                                     command, [n for n in notes if n]))
     print(f"wrote {args.doc} (section {SECTION_BEGIN}) and {len(sweeps)} sweeps' CSVs and PNGs "
