@@ -277,7 +277,7 @@ def check_two_of_a_figure(scratch, fig6, fig5, out):
     shutil.rmtree(copy)
     # a further Fig 6 sweep without P0 = 5e-2 has no lines about that point; alone it has
     ends = plan(scratch, "fig6_v", "fig6.mesophyll", ["P0=1e-3 ftol=1e-10", "P0=1e-7 ftol=1e-11"],
-                "steps 3 phi_stop 0.45")
+                "steps 4 phi_stop 0.4")
     fake_results(ends)
     missing = "not run (fig6_v has no point P0 = 0.05)"
     result, text = report(["--fig6", fig6, ends], doc, out)
@@ -287,6 +287,8 @@ def check_two_of_a_figure(scratch, fig6, fig5, out):
     result, text = report(["--fig6", ends], doc, out)
     expect(result.returncode == 0 and text.count(missing) == 2,
            "the only Fig 6 sweep without P0 = 5e-2 does not say so")
+    expect("runs stop below phi_patch 0.4 or after 4 growth steps;" in text,
+           "a sweep with phi_stop 0.4 and 4 steps does not give its own stopping rule")
 
 
 def check_archives(scratch, fig6, from_folders_of, out):
@@ -416,6 +418,9 @@ def main():
         expect("fig5_t's base point" in text and "fig6_t's P0 = 1e-05 point" in text,
                "the Fig 5 sweep did not borrow the Fig 6 sweep's P0 = 1e-5 runs")
         expect("both cap growth at 3 steps" in text, "the borrowing does not name the step cap")
+        expect("**fig6_t** (fig6): seeds 1 2 3 x tissues tissue_N16.data per point; runs stop "
+               "below phi_patch 0.45 or after 3 growth steps;" in text,
+               "the Fig 6 sweep's paragraph does not give its stopping rule")
         for name in ("fig6_t_against.png", "fig6_t_curves.png", "fig5_t_heatmaps.png",
                      "fig5_t_summary.csv", "fig6_t_points.csv"):
             expect(os.path.exists(os.path.join(out, name)), f"{name} was not written")
@@ -439,6 +444,8 @@ def main():
         text = from_fig5_cap = open(doc).read()
         expect(result.returncode == 0 and "growth-step cap of 3 against 5 here" in text and
                "none borrowed" in text, "the sweep capped at 5 steps borrowed runs capped at 3")
+        expect("runs stop below phi_patch 0.45 or after 5 growth steps;" in text,
+               "the sweep capped at 5 steps does not say so")
         # its withdrawn run: unfinished, and named with its reason
         statuses = [r["status"] for r in csv.DictReader(open(os.path.join(fig5_cap,
                                                                           "summary.csv")))]

@@ -345,6 +345,17 @@ class Sweep:
 
     borrowed = None    # (label, Ensemble) of a base point taken from the Fig 6 sweep
 
+    def stopping_rule(self):
+        """'below phi_patch 0.45 or after 12 growth steps': the sweep's phi_stop (its first
+        run's, or its protocol's default) and step caps (per point where they differ)."""
+        settings = dict(sweep.protocol_defaults(self.protocol),
+                        **self.run_record(self.rows[0])["variables"])
+        caps = sorted({int(r["steps_planned"]) for r in self.rows if r.get("steps_planned")})
+        steps = ("-" if not caps else f"{caps[0]}" if len(caps) == 1
+                 else f"{caps[0]}-{caps[-1]} (by point)")
+        return (f"below phi_patch {settings.get('phi_stop', '-')} or after {steps} growth "
+                f"steps")
+
     def run_record(self, row):
         """The run's record: its variables as the run saw them (a folder's run.json, or the
         plan of an archive's sweep file)."""
@@ -602,7 +613,8 @@ def section(sweeps, doc_dir, command, notes):
              "`fig4.sweep`, `fig5.sweep`, `fig6.sweep`, which hold the paper's full grids; "
              f"each file says how and why it is reduced).{source} Every run has vertex "
              "insertion (the example's default). "
-             "Runs stop once phi_patch falls below 0.45 or at their step cap. Status as "
+             "Runs stop once phi_patch falls below their sweep's phi_stop or at their step "
+             "cap (both given per sweep below). Status as "
              "`tools/sweep.py summary`: only *ok* runs enter the means; a *failed* run (rings "
              "that cross themselves or are inverted, non-finite values) is counted, never "
              "averaged. Means are over the seeds and initial tissues of each point (below); "
@@ -654,7 +666,8 @@ def section(sweeps, doc_dir, command, notes):
         seeds = sorted({r["seed"] for r in sweep.rows}, key=int)
         tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
         lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
-                  f"{', '.join(tissues)} per point; {done} of {runs} runs done; cost "
+                  f"{', '.join(tissues)} per point; runs stop {sweep.stopping_rule()}; "
+                  f"{done} of {runs} runs done; cost "
                   f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts"
                   + (f", {sweep.withdrawn_loop_s / 3600:.2f} h of it in withdrawn runs"
                      if sweep.withdrawn else "") + "), "
