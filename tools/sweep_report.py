@@ -632,29 +632,29 @@ def section(sweeps, doc_dir, command, notes):
              f"not show it: those lines say *no difference resolved*, with the standard "
              f"errors, never *holds*.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
-    of = lambda kind: [s for s in sweeps if s.kind == kind] or [None]  # noqa: E731
-    for f5 in of("fig5"):
-        lines.append(claim_line("low beta compacts", f5, {"beta": 30, "eps_b": 0.4},
-                                BASE["fig5"], "delta_phi_plus", +1))
-        lines.append(claim_line("low eps_b compacts", f5, {"beta": 100, "eps_b": 0.01},
-                                BASE["fig5"], "delta_phi_plus", +1))
-        lines.append(claim_line("low beta with low eps_b (the highlighted (30, 0.01)) compacts",
-                                f5, {"beta": 30, "eps_b": 0.01}, BASE["fig5"], "delta_phi_plus",
-                                +1))
-    for f4 in of("fig4"):
-        lines.append(claim_line("delta_a = 0.01 with lambda = 5 compacts", f4,
-                                {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "delta_phi_plus",
-                                +1))
-        lines.append(claim_line("few contacts at small delta_a", f4,
-                                {"lambda": 5, "delta_a": 0.01}, BASE["fig4"], "z_half", -1))
-    for k, f6 in enumerate(of("fig6")):
-        lines += unchanged_lines(f6, BASE["fig6"])
-        if k and f6.at(P0=5e-2) is None:
-            continue    # a further Fig 6 sweep without the point (fig6_ends): nothing to say
-        lines.append(claim_line("P0 = 5e-2 compacts", f6, {"P0": 5e-2}, BASE["fig6"],
-                                "delta_phi_plus", +1))
-        lines.append(claim_line("P0 = 5e-2 gives extreme calA", f6, {"P0": 5e-2}, BASE["fig6"],
-                                "calA_final", +1, "calA_final: mean calA at the run's last step."))
+    # (title, figure, point, quantity, sign[, note]) of each direction of the paper
+    claims = [
+        ("low beta compacts", "fig5", {"beta": 30, "eps_b": 0.4}, "delta_phi_plus", +1),
+        ("low eps_b compacts", "fig5", {"beta": 100, "eps_b": 0.01}, "delta_phi_plus", +1),
+        ("low beta with low eps_b (the highlighted (30, 0.01)) compacts", "fig5",
+         {"beta": 30, "eps_b": 0.01}, "delta_phi_plus", +1),
+        ("delta_a = 0.01 with lambda = 5 compacts", "fig4", {"lambda": 5, "delta_a": 0.01},
+         "delta_phi_plus", +1),
+        ("few contacts at small delta_a", "fig4", {"lambda": 5, "delta_a": 0.01}, "z_half", -1),
+        ("P0 = 5e-2 compacts", "fig6", {"P0": 5e-2}, "delta_phi_plus", +1),
+        ("P0 = 5e-2 gives extreme calA", "fig6", {"P0": 5e-2}, "calA_final", +1,
+         "calA_final: mean calA at the run's last step.")]
+    for kind in ("fig5", "fig4", "fig6"):
+        for k, figure_sweep in enumerate([s for s in sweeps if s.kind == kind] or [None]):
+            if kind == "fig6":
+                lines += unchanged_lines(figure_sweep, BASE["fig6"])
+            for title, _, values, quantity, sign, *note in (c for c in claims if c[1] == kind):
+                # a further sweep of the figure without the point (fig6_ends): nothing to say;
+                # the first says "not run"
+                if k and figure_sweep.at(**values) is None:
+                    continue
+                lines.append(claim_line(title, figure_sweep, values, BASE[kind], quantity, sign,
+                                        *note))
     lines += optimal_lines(sweeps)
     lines += ["", "### Per grid point, and what each figure cost", ""]
     for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
