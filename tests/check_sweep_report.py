@@ -208,6 +208,16 @@ def check_verdict_rules():
                for x in lines), f"the per-line difference and its SE: {lines}")
     expect(any("at P0 = 0.0001" in x and "not compared" in x for x in lines),
            f"the pressure with one accepted run is not marked 'not compared': {lines}")
+    # a resolved difference among the lower pressures: 'does not hold', with how many of that
+    # many comparisons chance alone would resolve (two-sided normal tail at 2 SE: 4.55 %)
+    apart = StubSweep(report, "apart", [
+        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
+        ({"P0": 1e-5}, runs("delta_A_early", [1.1, 1.12, 1.14])),
+        ({"P0": 1e-6}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
+    head = report.unchanged_lines(apart, {"P0": 1e-3})[0]
+    expect("**does not hold**: 1 of 2 differences resolved (with no difference at all, 2 "
+           "comparisons at 2 standard errors would resolve 0.091 by chance)" in head,
+           f"a resolved lower pressure: not 'does not hold' with the chance note: {head}")
     # the base point of the default: no point resolved lower, and how many could be compared
     base = StubSweep(report, "base", [
         ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
@@ -218,6 +228,15 @@ def check_verdict_rules():
            "no point resolved lower" in optimal[0] and "among the 1 of 2 other points" in
            optimal[0] and "rank 2 of the 3 points" in optimal[0],
            f"near-optimal without a resolved difference: {optimal}")
+    # a point resolved lower than the base: 'does not hold', with the one-sided chance (2.28 %)
+    lower = StubSweep(report, "lower", [
+        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
+        ({"P0": 1e-5}, runs("delta_A_early", [0.5, 0.52, 0.54])),
+        ({"P0": 1e-4}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
+    optimal = [x for x in report.optimal_lines([lower]) if "delta_A_early" in x]
+    expect(len(optimal) == 1 and "**does not hold**: resolved lower at P0=1e-05 (0.52) (with no "
+           "difference at all, 2 comparisons at 2 standard errors would resolve 0.046 by "
+           "chance)" in optimal[0], f"near-optimal with a point resolved lower: {optimal}")
 
 
 def section_after(text, heading):

@@ -476,6 +476,15 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             + (f" {note}" if note else ""))
 
 
+def chance(tests, sides):
+    """How many of `tests` comparisons would resolve by chance alone, with no difference there:
+    the verdict rule tests each at RESOLVED standard errors and does not correct for their
+    number (normal tails: about 4.6 % each two-sided, 2.3 % one-sided at 2 SE)."""
+    p = math.erfc(RESOLVED / math.sqrt(2)) / (2 if sides == 1 else 1)
+    return (f"with no difference at all, {tests} comparison{'s' if tests != 1 else ''} at "
+            f"{RESOLVED:g} standard errors would resolve {tests * p:.2g} by chance")
+
+
 def reach_note(e):
     """Where the accepted runs of a point ended: mean growth steps and final phi_patch, and
     phi_patch at the step nearest 0.5 (where z_half is taken)."""
@@ -523,7 +532,8 @@ def unchanged_lines(sweep, reference):
                                                  ("too few runs", "with too few runs"))
             if counts.get(v)]
     if resolved:
-        verdict = f"**does not hold**: {resolved} of {tested} differences resolved"
+        verdict = (f"**does not hold**: {resolved} of {tested} differences resolved "
+                   f"({chance(tested, 2)})")
     else:
         verdict = (f"**no difference resolved at {RESOLVED:g} standard errors** in {tested} "
                    f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not "
@@ -573,7 +583,8 @@ def optimal_lines(sweeps):
                             f"among the {compared} of {len(everywhere) - 1} other points with "
                             f"two or more accepted runs (consistent, not shown)"
                             if not better else
-                            "**does not hold**: resolved lower at " + ", ".join(better)))
+                            "**does not hold**: resolved lower at " + ", ".join(better)
+                            + f" ({chance(compared, 1)})"))
     if not lines:
         return ["- *the default is near-optimal in delta_A*: not run."]
     return ["- *the default is near-optimal in delta_A* (the base point of each sweep against "
