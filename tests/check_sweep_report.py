@@ -76,7 +76,7 @@ def plan(scratch, name, parameters, points, fixed, protocol=None):
     with open(path, "w") as f:
         f.write(f"name {name}\nparameters {os.path.join(ROOT, 'potentials', parameters)}\n"
                 + (f"protocol {protocol}\n" if protocol else "") +
-                f"set base\n" + "".join(f"point {p}\n" for p in points) +
+                "set base\n" + "".join(f"point {p}\n" for p in points) +
                 f"seeds 1 2 3\ntissue {TISSUE}\nfixed {fixed}\n")
     folder = os.path.join(scratch, name)
     subprocess.run([sys.executable, SWEEP, "plan", path, folder], check=True,

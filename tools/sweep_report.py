@@ -548,16 +548,16 @@ def optimal_lines(sweeps):
     every other point. No point resolved lower is not a shown optimum: the line says so, and
     how many points could be compared at all."""
     lines = []
-    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind)):
-        kind = sweep.kind
-        base = sweep.at(**BASE[kind])
+    for one in sorted(sweeps, key=lambda s: KINDS.index(s.kind)):
+        kind = one.kind
+        base = one.at(**BASE[kind])
         if base is None:
-            lines.append(f"  - {sweep.name}: no base point ({BASE[kind]}).")
+            lines.append(f"  - {one.name}: no base point ({BASE[kind]}).")
             continue
         for quantity in ("delta_A_early", "delta_A_late"):
             better, ranks, compared = [], [], 0
             mb = base.stats(quantity)[0]
-            everywhere = sweep.points()
+            everywhere = one.points()
             for label, e in everywhere:
                 m = e.stats(quantity)[0]
                 if m is None or mb is None:
@@ -568,15 +568,15 @@ def optimal_lines(sweeps):
                 if verdict == "holds":
                     better.append(f"{label} ({m:.3g})")
             if mb is None:
-                lines.append(f"  - {sweep.name}, {quantity}: the base point has no accepted run.")
+                lines.append(f"  - {one.name}, {quantity}: the base point has no accepted run.")
                 continue
             if len(ranks) < 2:
-                lines.append(f"  - {sweep.name}, {quantity}: cannot be told (no point beside "
+                lines.append(f"  - {one.name}, {quantity}: cannot be told (no point beside "
                              f"the base with an accepted run).")
                 continue
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
-            lines.append(f"  - {sweep.name}, {quantity}: base {mean_se(m, se, n)}, "
+            lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
                          f"rank {rank} of the {len(ranks)} points with an accepted run "
                          f"({len(everywhere)} points in the sweep); "
                          + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
@@ -592,8 +592,8 @@ def optimal_lines(sweeps):
 
 
 def points_table(sweep):
-    lines = [f"| point | runs | delta_A early | delta_A late | delta_phi_plus | z near 0.5 "
-             f"(at phi_patch) | phi_patch end |", "| --- | --- | --- | --- | --- | --- | --- |"]
+    lines = ["| point | runs | delta_A early | delta_A late | delta_phi_plus | z near 0.5 "
+             "(at phi_patch) | phi_patch end |", "| --- | --- | --- | --- | --- | --- | --- |"]
     for label, e in sweep.points():
         def cell(quantity):
             m, _, se, n = e.stats(quantity)
@@ -668,34 +668,34 @@ def section(sweeps, doc_dir, command, notes):
                                         *note))
     lines += optimal_lines(sweeps)
     lines += ["", "### Per grid point, and what each figure cost", ""]
-    for sweep in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
-        kind = sweep.kind
-        runs = len(sweep.rows)
-        done = sum(r["status"] != "unfinished" for r in sweep.rows)
-        rate = (f"; {sweep.timed / (sweep.wall_s / 3600):.0f} runs per partition-hour"
-                if sweep.wall_s else "")
-        seeds = sorted({r["seed"] for r in sweep.rows}, key=int)
-        tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in sweep.rows})
-        lines += [f"**{sweep.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
-                  f"{', '.join(tissues)} per point; runs stop {sweep.stopping_rule()}; "
+    for one in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
+        kind = one.kind
+        runs = len(one.rows)
+        done = sum(r["status"] != "unfinished" for r in one.rows)
+        rate = (f"; {one.timed / (one.wall_s / 3600):.0f} runs per partition-hour"
+                if one.wall_s else "")
+        seeds = sorted({r["seed"] for r in one.rows}, key=int)
+        tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in one.rows})
+        lines += [f"**{one.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
+                  f"{', '.join(tissues)} per point; runs stop {one.stopping_rule()}; "
                   f"{done} of {runs} runs done; cost "
-                  f"{sweep.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts"
-                  + (f", {sweep.withdrawn_loop_s / 3600:.2f} h of it in withdrawn runs"
-                     if sweep.withdrawn else "") + "), "
-                  f"{sweep.wall_s / 3600:.2f} h of partition wall time (the finishing "
-                  f"attempts of {sweep.timed} run{'s' if sweep.timed != 1 else ''}{rate}; "
+                  f"{one.loop_s / 3600:.2f} h of LAMMPS loop time (all attempts"
+                  + (f", {one.withdrawn_loop_s / 3600:.2f} h of it in withdrawn runs"
+                     if one.withdrawn else "") + "), "
+                  f"{one.wall_s / 3600:.2f} h of partition wall time (the finishing "
+                  f"attempts of {one.timed} run{'s' if one.timed != 1 else ''}{rate}; "
                   f"on a shared machine wall times "
                   f"depend on the other jobs).", ""]
-        for reason, runs in sweep.withdrawn.items():
+        for reason, runs in one.withdrawn.items():
             many = len(runs) > 1
-            lines += [f"Withdrawn: run{'s' if many else ''} {', '.join(runs)} of {sweep.name} "
+            lines += [f"Withdrawn: run{'s' if many else ''} {', '.join(runs)} of {one.name} "
                       f"({reason}); {'their' if many else 'its'} outputs lie in the sweep "
                       f"folder's runs/<id>/withdrawn/ (the runs, reasons and loop times in "
-                      f"`{sweep.name}_withdrawn.csv`), {'they count' if many else 'it counts'} as "
+                      f"`{one.name}_withdrawn.csv`), {'they count' if many else 'it counts'} as "
                       f"unfinished here, and a resumed sweep runs {'them' if many else 'it'} "
                       f"again from the start.", ""]
-        lines += points_table(sweep) + [""]
-        lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in sweep.figures] or \
+        lines += points_table(one) + [""]
+        lines += [f"![{os.path.basename(p)}]({rel(p)})" for p in one.figures] or \
             ["No figure: no run of this sweep has an accepted status."]
         lines.append("")
     lines.append(SECTION_END)
