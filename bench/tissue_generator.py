@@ -2,13 +2,15 @@
 """Compare the fast tissue generator with in.make_tissue: time and the tissues it makes.
 
     bench/tissue_generator.py [--lmp build/lmp] [--sizes 16 64] [--seeds 1 2 3 4]
-                              [--old-seeds 11 13] [--old-csv FILE] [--large 1024]
-                              [--csv bench/results/tissue_generator.csv]
+                              [--old-sizes 16] [--old-seeds 11 13] [--old-csv FILE]
+                              [--large 1024] [--csv bench/results/tissue_generator.csv]
 
 For each size and seed, tools/make_tissue.py (Voronoi-seeded rings relaxed by
 examples/tissue/in.relax_tissue, one rank) makes a tissue; examples/tissue/in.make_tissue (random
-rings compressed in 1% steps) makes one for every --old-seeds at 16 cells; the shipped
-tissue_N16.data (seed 7) and tissue_N64.data (seed 3) join them without a time (made before).
+rings compressed in 1% steps) makes one for every --old-seeds at each --old-sizes (16 cells by
+default); the shipped tissue_N16.data (seed 7), tissue_N32.data (seed 7) and tissue_N64.data
+(seed 3) join them without a time (made before), each where its size is among --sizes or
+--old-sizes.
 Every tissue is then measured the same way, by one `run 0` with the main example's styles:
 phi_patch, mean calA, mean z, adhesive bonds per cell, pressure. CPU seconds are those of the
 processes (make_tissue.py with its LAMMPS run, or lmp), from getrusage. --old-csv reuses the
@@ -39,6 +41,7 @@ import numpy as np  # noqa: E402
 TISSUE = os.path.join(ROOT, "examples", "tissue")
 GENERATOR = os.path.join(ROOT, "tools", "make_tissue.py")
 MEASURES = ["phi_patch", "calA", "z", "bonds_per_cell", "P"]
+SHIPPED = {16: 7, 32: 7, 64: 3}    # examples/tissue/tissue_N<cells>.data: the seed it was made with
 FIELDS = ["method", "cells", "seed", "cpu_s", "wall_s", "phi", "phi_patch", "calA", "z",
           "bonds_per_cell", "P"]
 MEASURE_INPUT = """compute tissue all dpoly/tissue
@@ -147,6 +150,7 @@ def main():
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
     p.add_argument("--sizes", type=int, nargs="*", default=[16, 64])
     p.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3, 4])
+    p.add_argument("--old-sizes", type=int, nargs="*", default=[16])
     p.add_argument("--old-seeds", type=int, nargs="*", default=[11, 13])
     p.add_argument("--old-csv", default=None,
                    help="take the in.make_tissue rows from this CSV instead of rerunning them")
@@ -160,10 +164,13 @@ def main():
             with open(args.old_csv) as f:
                 rows += [r for r in csv.DictReader(f) if r["method"] == "in.make_tissue"]
         else:
-            rows += [shipped_row(args, 16, 7, work), shipped_row(args, 64, 3, work)]
-            for seed in args.old_seeds:
-                rows.append(old_row(args, 16, seed, work))
-                print(f"in.make_tissue N16 seed {seed}: {rows[-1]['cpu_s']:.1f} CPU s", flush=True)
+            rows += [shipped_row(args, cells, seed, work) for cells, seed in SHIPPED.items()
+                     if cells in args.sizes + args.old_sizes]
+            for cells in args.old_sizes:
+                for seed in args.old_seeds:
+                    rows.append(old_row(args, cells, seed, work))
+                    print(f"in.make_tissue N{cells} seed {seed}: {rows[-1]['cpu_s']:.1f} CPU s",
+                          flush=True)
         for cells in args.sizes + ([args.large] if args.large else []):
             for seed in (args.seeds if cells != args.large else [1]):
                 rows.append(generator_row(args, cells, seed, work))
