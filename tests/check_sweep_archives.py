@@ -26,7 +26,8 @@ ROOT = os.path.dirname(HERE)
 REPORT = os.path.join(ROOT, "tools", "sweep_report.py")
 DOC = os.path.join(ROOT, "doc", "validation.md")
 ARCHIVES = os.path.join(ROOT, "validation", "sweeps")
-BEGIN, END = "<!-- sweeps: tools/sweep_report.py -->", "<!-- /sweeps -->"
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from sweep_report import SECTION_BEGIN as BEGIN, SECTION_END as END  # noqa: E402
 
 
 def section(text):

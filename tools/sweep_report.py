@@ -140,10 +140,8 @@ def number(text):
 
 
 def same_value(text, value):
-    try:
-        return math.isclose(float(text), float(value), rel_tol=1e-9)
-    except (TypeError, ValueError):
-        return False
+    parsed = number(text)
+    return parsed is not None and math.isclose(parsed, float(value), rel_tol=1e-9)
 
 
 def ensemble_at(rows, values, accept):
@@ -235,9 +233,9 @@ class Sweep:
         extra = [a for k in self.accept if k != "ok" for a in ("--accept", k)]
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
-        self.name = sweep.planned_sweep(folder)[0]
+        self.name, planned_file = sweep.planned_sweep(folder)
         self.protocol = sweep.planned_protocol(folder, self.rows[0]["run"])
-        self.sweep_file = shown(sweep.planned_sweep(folder)[1])
+        self.sweep_file = shown(planned_file)
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
 
@@ -345,11 +343,15 @@ class Sweep:
 
     borrowed = None    # (label, Ensemble) of a base point taken from the Fig 6 sweep
 
+    def settings(self, record):
+        """A run's variables as it ran: those its record sets, its protocol's defaults for the
+        rest."""
+        return dict(sweep.protocol_defaults(self.protocol), **record["variables"])
+
     def stopping_rule(self):
         """'below phi_patch 0.45 or after 12 growth steps': the sweep's phi_stop (its first
         run's, or its protocol's default) and step caps (per point where they differ)."""
-        settings = dict(sweep.protocol_defaults(self.protocol),
-                        **self.run_record(self.rows[0])["variables"])
+        settings = self.settings(self.run_record(self.rows[0]))
         caps = sorted({int(r["steps_planned"]) for r in self.rows if r.get("steps_planned")})
         steps = ("-" if not caps else f"{caps[0]}" if len(caps) == 1
                  else f"{caps[0]}-{caps[-1]} (by point)")
@@ -388,9 +390,7 @@ class Sweep:
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
         lender = fig6.run_record(rows[0])
-        # a variable a run leaves unset takes its protocol's default
-        settings = [dict(sweep.protocol_defaults(s.protocol), **r["variables"])
-                    for s, r in ((self, mine), (fig6, lender))]
+        settings = [self.settings(mine), fig6.settings(lender)]
         differ = [name for name in BORROW_RUN_VARIABLES
                   if settings[0].get(name) != settings[1].get(name)]
         seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
