@@ -184,28 +184,24 @@ def cells_in(tissue):
     return len(cells)
 
 
-def planned_protocol(folder, run):
-    """The protocol file the runs of a planned folder include: plan.lmp gives it relative to a
-    run's folder (runs/<run>)."""
-    with open(os.path.join(folder, "plan.lmp")) as f:
-        for line in f:
-            words = line.split()
-            if words[:3] == ["variable", "protocol", "string"]:
-                return os.path.normpath(os.path.join(folder, "runs", run, words[3]))
-    sys.exit(f"{folder}/plan.lmp names no protocol: not a folder of tools/sweep.py plan")
-
-
-def planned_sweep(folder):
-    """(name, sweep file) of a planned folder, as plan.lmp's first line gives them (the file
-    relative to the package's folder): the name is the sweep's, whatever the folder is called."""
+def planned(folder):
+    """(name, sweep file, protocol) of a planned folder, read from its plan.lmp: the first line
+    gives the sweep's name (whatever the folder is called) and its file relative to the package's
+    folder; the protocol line gives the file every run includes, relative to a run's folder
+    (runs/<run>, all at one depth)."""
     plan_file = os.path.join(folder, "plan.lmp")
     if not os.path.isfile(plan_file):
         sys.exit(f"{folder} has no plan.lmp: not a folder of tools/sweep.py plan")
     with open(plan_file) as f:
         found = re.match(r"# sweep (\S+) from (.+): \d+ runs ", f.readline())
+        protocol = next((words[3] for words in map(str.split, f)
+                         if words[:3] == ["variable", "protocol", "string"]), None)
     if found is None:
         sys.exit(f"{folder}/plan.lmp names no sweep: not a folder of tools/sweep.py plan")
-    return found.group(1), os.path.normpath(os.path.join(ROOT, found.group(2)))
+    if protocol is None:
+        sys.exit(f"{folder}/plan.lmp names no protocol: not a folder of tools/sweep.py plan")
+    return (found.group(1), os.path.normpath(os.path.join(ROOT, found.group(2))),
+            os.path.normpath(os.path.join(folder, "runs", "run", protocol)))
 
 
 def path_from(folder, path):

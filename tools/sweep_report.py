@@ -233,8 +233,7 @@ class Sweep:
         extra = [a for k in self.accept if k != "ok" for a in ("--accept", k)]
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
-        self.name, planned_file = sweep.planned_sweep(folder)
-        self.protocol = sweep.planned_protocol(folder, self.rows[0]["run"])
+        self.name, planned_file, self.protocol = sweep.planned(folder)
         self.sweep_file = shown(planned_file)
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
@@ -745,7 +744,7 @@ def main():
         elif not os.path.isdir(os.path.join(source, "runs")):
             p.error(f"--{kind} {source}: neither a sweep folder with runs/ (plan and run the "
                     f"sweep first) nor an archived <name>_summary.csv")
-    names = [archive_name(s) if os.path.isfile(s) else sweep.planned_sweep(s)[0]
+    names = [archive_name(s) if os.path.isfile(s) else sweep.planned(s)[0]
              for _, s in given]
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:    # their CSVs and figures in OUT would overwrite each other
