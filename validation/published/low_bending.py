@@ -20,22 +20,13 @@ Each row gives phi_patch, calA and z of that state and the pairs of cells whose 
 overlap as fix dpoly/check counts them (and the first pair it names).
 """
 import argparse
-import csv
 import os
 import re
-import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
-PARAMETERS = os.path.join(ROOT, "potentials", "fig5.mesophyll")
+import same_tissue
+
 EPS_B = ("0.01", "0.03", "0.1", "0.4", "0.6")
-P0 = "1e-5"
-THETA0_MIN_ARG = "0.3"    # the driver multiplies it by -pi/2: theta0_min = -3 pi/20
-PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var",
-                                             "break_start", "2", "-var", "steer", "mass"],
-                 "package_sweep": []}
 COLUMNS = ["eps_b", "code", "phi_patch", "calA", "z", "interpenetrating_pairs", "first_pair"]
 PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate \(first: cells (\d+) and (\d+)\)")
 PROGRESS = re.compile(r"^growth step 2/2: .* phi_patch (\S+) <calA> (\S+) <z> (\S+)")
@@ -48,33 +39,22 @@ def pairs_in(line):
 
 
 def published(binary, lmp, work, eps_b):
-    folder = os.path.join(work, f"published_{eps_b}")
-    out = folder + ".csv"
-    subprocess.run([sys.executable, os.path.join(HERE, "run.py"), binary,
-                    os.path.join(work, "tissue_N16.input"), "20261122", out, "--work", folder,
-                    "--steps", "1", "--lmp", lmp, "--data", TISSUE, "--set", f"kb0={eps_b}",
-                    "--set", f"t0_min={THETA0_MIN_ARG}", "--set", f"P0={P0}"],
-                   check=True, stdout=subprocess.DEVNULL)
-    rows = list(csv.DictReader(open(out)))
+    folder = f"published_{eps_b}"
+    rows = same_tissue.published(binary, lmp, work, folder, "20261122",
+                                 ["--steps", "1", "--set", f"kb0={eps_b}"])
     frame = next(r for r in rows if r["growth_steps"] == "1")
     # in.measure's fix dpoly/check lines, one per frame: the last is frame 1's
-    checks = [line for line in open(os.path.join(folder, "log.measure"))
+    checks = [line for line in open(os.path.join(work, folder, "log.measure"))
               if line.startswith("fix dpoly/check:")]
     count, first = pairs_in(checks[-1])
     if count != int(frame["interpenetrating_pairs"]):
-        sys.exit(f"{folder}: the check line and the CSV disagree on the pairs")
+        sys.exit(f"{work}/{folder}: the check line and the CSV disagree on the pairs")
     return [frame["phi_patch"], frame["calA"], frame["z"], count, first]
 
 
 def package(lmp, work, eps_b, mode):
-    folder = os.path.join(work, f"{mode}_{eps_b}")
-    os.makedirs(folder, exist_ok=True)
-    subprocess.run([lmp, "-in", os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll"),
-                    "-var", "N", "16", "-var", "tissue", TISSUE, "-var", "parameters",
-                    PARAMETERS, "-var", "set", "base", "-var", "eps_b", eps_b, "-var", "P0", P0,
-                    "-var", "ftol", "1e-11", "-var", "steps", "2", "-var", "restart_every", "0",
-                    "-log", "log.lammps", "-screen", "none"] + PACKAGE_MODES[mode],
-                   cwd=folder, check=True)
+    folder = same_tissue.package(lmp, work, f"{mode}_{eps_b}", mode,
+                                 {"eps_b": eps_b, "steps": "2"})
     log = open(os.path.join(folder, "log.lammps")).read().splitlines()
     state = next(PROGRESS.match(line).groups() for line in log if PROGRESS.match(line))
     check = next(line for line in log if line.startswith("fix dpoly/check: minimum 2 "))
@@ -84,26 +64,20 @@ def package(lmp, work, eps_b, mode):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("binary")
-    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--lmp", default=os.path.join(same_tissue.ROOT, "build", "lmp"))
     p.add_argument("--work", default="/tmp/low_bending")
-    p.add_argument("--out", default=os.path.join(HERE, "low_bending.csv"))
+    p.add_argument("--out", default=os.path.join(same_tissue.HERE, "low_bending.csv"))
     a = p.parse_args()
     lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
-    os.makedirs(a.work, exist_ok=True)
-    subprocess.run([sys.executable, os.path.join(HERE, "make_input.py"), TISSUE,
-                    os.path.join(a.work, "tissue_N16.input")], check=True,
-                   stdout=subprocess.DEVNULL)
+    same_tissue.driver_input(a.work)
     rows = []
     for eps_b in EPS_B:
         rows.append([eps_b, "published"] + published(binary, lmp, a.work, eps_b))
-        for mode in PACKAGE_MODES:
+        for mode in same_tissue.PACKAGE_MODES:
             rows.append([eps_b, mode] + package(lmp, a.work, eps_b, mode))
         print(f"eps_b {eps_b}: done", flush=True)
-    with open(a.out, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(COLUMNS)
-        w.writerows(rows)
-    width = max(len(c) for c in PACKAGE_MODES)
+    same_tissue.write_csv(a.out, COLUMNS, rows)
+    width = max(len(c) for c in same_tissue.PACKAGE_MODES)
     print(f"{'eps_b':6} {'code':{width}} phi_patch calA   z     pairs (first)")
     for r in rows:
         print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
