@@ -2,11 +2,12 @@
 """Does low beta compact? Whole trajectories at Fig 5's base and low beta: the published code
 against the package, from the same tissue.
 
-    low_beta.py BINARY [--lmp build/lmp] [--work DIR] [--out low_beta.csv] [--seeds 1 2 ...]
-                [--jobs 2]
+    low_beta.py BINARY [--lmp build/lmp] [--work DIR] [--out low_beta.csv] [--seeds 1 2 3]
+                [--jobs 2] [--resume]
 
-Runs whose outputs are whole are not run again (started again with the same options, it picks
-up where it was stopped); delete the work folder to start afresh.
+--resume: a run that finished in DIR with the same command is read, not run again (a comparison
+stopped and started again picks up where it was); only after no change to the binaries or the
+inputs. A run that fails stops the comparison.
 
 BINARY is the driver build.sh made. From tissue_N16.data (through make_input.py), with Fig 5's
 base set (eps_b 0.4, theta0_min -3 pi/20) at P0 = 1e-5 (the pressure of fig5_late.sweep) and
@@ -23,7 +24,9 @@ The seeds of the two codes draw from different generators: no seed of one corres
 the other. Per run, from the phi_patch of its recorded states (the published code's frames, the
 package's minima): delta_phi_plus, the sum of the rises of phi_patch from one state to the next
 (the same definition for both codes), the number of states that rose and the largest rise, and
-the states in which fix dpoly/check finds cells whose outlines overlap.
+the states in which fix dpoly/check finds cells whose outlines overlap (counted from 0, the
+first state: 1 is the first minimum after growth), and the run's seconds (the driver: the sum of
+its frames' wall_s; the package: LAMMPS's loop time).
 """
 import argparse
 import concurrent.futures
@@ -37,9 +40,10 @@ BETAS = ("100", "30")
 PHI_STOP, STEPS = "0.3", "40"
 COLUMNS = ["beta", "code", "seed", "states", "phi_patch_end", "delta_phi_plus", "rises",
            "largest_rise", "states_interpenetrating", "first_interpenetrating_state",
-           "phi_patch_per_state"]
+           "seconds", "phi_patch_per_state"]
 PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate")
 CHECK = re.compile(r"^fix dpoly/check: minimum (\d+) ")
+LOOP = re.compile(r"^Loop time of (\S+)")
 
 
 def compaction(phi):
@@ -48,40 +52,45 @@ def compaction(phi):
     return sum(rises), len(rises), max(rises, default=0.0)
 
 
-def published(binary, lmp, work, beta, seed):
-    """phi_patch and the interpenetrating pairs of each frame of the driver's run."""
+def published(binary, lmp, work, beta, seed, resume):
+    """phi_patch and the interpenetrating pairs of each frame of the driver's run, and its
+    seconds."""
     rows = same_tissue.published(binary, lmp, work, f"published_beta{beta}_seed{seed}", seed,
                                  ["--phi-stop", PHI_STOP, "--steps", STEPS,
-                                  "--set", f"betaEff={beta}"])
+                                  "--set", f"betaEff={beta}"], resume)
     return ([float(r["phi_patch"]) for r in rows],
-            [int(r["interpenetrating_pairs"]) for r in rows])
+            [int(r["interpenetrating_pairs"]) for r in rows],
+            sum(float(r["wall_s"]) for r in rows))
 
 
-def package(lmp, work, beta, seed, mode):
-    """phi_patch and the interpenetrating pairs of each minimum of in.mesophyll's run."""
+def package(lmp, work, beta, seed, mode, resume):
+    """phi_patch and the interpenetrating pairs of each minimum of in.mesophyll's run, and its
+    loop time."""
     folder = same_tissue.package(lmp, work, f"{mode}_beta{beta}_seed{seed}", mode,
                                  {"beta": beta, "steps": STEPS, "phi_stop": PHI_STOP,
-                                  "seed": seed})
+                                  "seed": seed}, resume)
     with open(os.path.join(folder, "growth.N16.txt")) as f:
         header = f.readline().lstrip("# ").split()
         phi = [float(line.split()[header.index("phi_patch")]) for line in f if line.strip()]
-    pairs = {}
+    pairs, seconds = {}, 0.0
     for line in open(os.path.join(folder, "log.lammps")):
         m = CHECK.match(line)
+        if LOOP.match(line):
+            seconds += float(LOOP.match(line).group(1))
         if m:
             found = PAIRS.search(line)
             pairs[int(m.group(1))] = int(found.group(1)) if found else 0
     if sorted(pairs) != list(range(1, len(phi) + 1)):
         sys.exit(f"{folder}: fix dpoly/check checked minima {sorted(pairs)}, the growth table "
                  f"has {len(phi)}")
-    return phi, [pairs[k] for k in sorted(pairs)]
+    return phi, [pairs[k] for k in sorted(pairs)], seconds
 
 
-def row(beta, code, seed, phi, pairs):
+def row(beta, code, seed, phi, pairs, seconds):
     plus, rises, largest = compaction(phi)
     bad = [k for k, n in enumerate(pairs) if n > 0]
     return [beta, code, seed, len(phi), f"{phi[-1]:.6f}", f"{plus:.6f}", rises,
-            f"{largest:.6f}", len(bad), bad[0] if bad else "",
+            f"{largest:.6f}", len(bad), bad[0] if bad else "", f"{seconds:.1f}",
             " ".join(f"{x:.4f}" for x in phi)]
 
 
@@ -108,8 +117,10 @@ def main():
     p.add_argument("--lmp", default=os.path.join(same_tissue.ROOT, "build", "lmp"))
     p.add_argument("--work", default="/tmp/low_beta")
     p.add_argument("--out", default=os.path.join(same_tissue.HERE, "low_beta.csv"))
-    p.add_argument("--seeds", nargs="+", default=["1", "2", "3", "4", "5"])
+    p.add_argument("--seeds", nargs="+", default=["1", "2", "3"])
     p.add_argument("--jobs", type=int, default=2, help="runs at a time (one core each)")
+    p.add_argument("--resume", action="store_true",
+                   help="read the runs that finished in --work with the same command")
     a = p.parse_args()
     if a.jobs < 1:
         p.error(f"--jobs must be at least 1, got {a.jobs}")
@@ -122,14 +133,19 @@ def main():
     def one(task):
         beta, code, seed = task
         if code == "published":
-            result = published(binary, lmp, a.work, beta, seed)
+            result = published(binary, lmp, a.work, beta, seed, a.resume)
         else:
-            result = package(lmp, a.work, beta, seed, code)
+            result = package(lmp, a.work, beta, seed, code, a.resume)
         print(f"beta {beta} seed {seed} {code}: done", flush=True)
         return row(beta, code, seed, *result)
 
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        rows = list(pool.map(one, tasks))
+        futures = [pool.submit(one, task) for task in tasks]
+        try:
+            rows = [future.result() for future in futures]
+        except BaseException:    # a failed run, or Ctrl-C: start no further run
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
     same_tissue.write_csv(a.out, COLUMNS, rows)
     width = max(len(c) for c in same_tissue.PACKAGE_MODES)
     print(f"{'beta':4} {'code':{width}} seed states phi_end dphi+   rises interpenetrating")

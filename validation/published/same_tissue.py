@@ -27,19 +27,22 @@ def driver_input(work):
     return path
 
 
-def run_once(command, record, complete, **kw):
-    """Run command unless record (a file) holds the same command and complete() says its
-    outputs are whole: a killed comparison started again reruns only what it had not finished.
-    Delete the work folder to start afresh."""
+def run_once(command, record, complete, resume, **kw):
+    """Run command, and write it into record once it has succeeded. With resume, skip it where
+    record holds the same command and complete() says its outputs are whole: a comparison
+    stopped and started again reruns only what it had not finished. Reuse trusts the record:
+    after a change to the binaries or the input files, start without resume."""
     line = " ".join(command) + "\n"
-    if os.path.exists(record) and open(record).read() == line and complete():
+    if resume and os.path.exists(record) and open(record).read() == line and complete():
         return
+    if os.path.exists(record):
+        os.remove(record)
+    subprocess.run(command, check=True, **kw)
     with open(record, "w") as f:
         f.write(line)
-    subprocess.run(command, check=True, **kw)
 
 
-def published(binary, lmp, work, folder, seed, run_options):
+def published(binary, lmp, work, folder, seed, run_options, resume=False):
     """Run the driver (run.py) into work/folder with Fig 5's theta0_min and P0 and the given
     run.py options; return the rows of its CSV (run.py writes it once the run is measured)."""
     out = os.path.join(work, folder + ".csv")
@@ -47,12 +50,12 @@ def published(binary, lmp, work, folder, seed, run_options):
                os.path.join(work, "tissue_N16.input"), seed, out, "--work",
                os.path.join(work, folder), "--lmp", lmp, "--data", TISSUE,
                "--set", f"t0_min={THETA0_MIN_ARG}", "--set", f"P0={P0}"] + run_options
-    run_once(command, out + ".command", lambda: os.path.exists(out),
+    run_once(command, out + ".command", lambda: os.path.exists(out), resume,
              stdout=subprocess.DEVNULL)
     return list(csv.DictReader(open(out)))
 
 
-def package(lmp, work, folder, mode, variables):
+def package(lmp, work, folder, mode, variables, resume=False):
     """Run in.mesophyll in work/folder with Fig 5's base set at P0, ftol 1e-11, no restart
     files, the mode's variables and the given ones ({name: value}); return the folder."""
     folder = os.path.join(work, folder)
@@ -66,7 +69,8 @@ def package(lmp, work, folder, mode, variables):
         PACKAGE_MODES[mode]
     log = os.path.join(folder, "log.lammps")
     run_once(command, os.path.join(folder, "command.txt"),
-             lambda: os.path.exists(log) and "Total wall time:" in open(log).read(), cwd=folder)
+             lambda: os.path.exists(log) and "Total wall time:" in open(log).read(), resume,
+             cwd=folder)
     return folder
 
 
