@@ -19,7 +19,6 @@ eps_b each value of EPS_B:
 Each row gives phi_patch, calA and z of that state and the pairs of cells whose outlines
 overlap as fix dpoly/check counts them (and the first pair it names).
 """
-import argparse
 import os
 import re
 import sys
@@ -62,11 +61,7 @@ def package(lmp, work, eps_b, mode):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("binary")
-    p.add_argument("--lmp", default=os.path.join(same_tissue.ROOT, "build", "lmp"))
-    p.add_argument("--work", default="/tmp/low_bending")
-    p.add_argument("--out", default=os.path.join(same_tissue.HERE, "low_bending.csv"))
+    p = same_tissue.arguments(__doc__, "low_bending")
     a = p.parse_args()
     lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
     same_tissue.driver_input(a.work)

@@ -28,7 +28,6 @@ the states in which fix dpoly/check finds cells whose outlines overlap (counted 
 first state: 1 is the first minimum after growth), and the run's seconds (the driver: the sum of
 its frames' wall_s; the package: LAMMPS's loop time).
 """
-import argparse
 import concurrent.futures
 import os
 import re
@@ -112,11 +111,7 @@ def summary(rows):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("binary")
-    p.add_argument("--lmp", default=os.path.join(same_tissue.ROOT, "build", "lmp"))
-    p.add_argument("--work", default="/tmp/low_beta")
-    p.add_argument("--out", default=os.path.join(same_tissue.HERE, "low_beta.csv"))
+    p = same_tissue.arguments(__doc__, "low_beta")
     p.add_argument("--seeds", nargs="+", default=["1", "2", "3"])
     p.add_argument("--jobs", type=int, default=2, help="runs at a time (one core each)")
     p.add_argument("--resume", action="store_true",

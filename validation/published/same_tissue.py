@@ -1,6 +1,7 @@
 """Runs of both codes from the same state for the Fig 5 comparisons (low_bending.py,
 low_beta.py): tissue_N16.data with Fig 5's parameter file, its base set (theta0_min -3 pi/20)
 at P0 = 1e-5, the pressure of fig5_coarse.sweep and fig5_late.sweep."""
+import argparse
 import csv
 import os
 import subprocess
@@ -16,6 +17,16 @@ THETA0_MIN_ARG = "0.3"    # the driver multiplies it by -pi/2: theta0_min = -3 p
 PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var",
                                              "break_start", "2", "-var", "steer", "mass"],
                  "package_sweep": []}
+
+
+def arguments(doc, name):
+    """The options both comparisons take: the driver, lmp, the work folder, the CSV."""
+    p = argparse.ArgumentParser(description=doc.splitlines()[0])
+    p.add_argument("binary", help="the driver build.sh made")
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--work", default=os.path.join("/tmp", name))
+    p.add_argument("--out", default=os.path.join(HERE, name + ".csv"))
+    return p
 
 
 def driver_input(work):
