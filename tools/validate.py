@@ -322,7 +322,9 @@ AFTER_PART_C = (
     (SWEEPS_BEGIN, SWEEPS_END),
     ("<!-- fig4 stall: validation/fig4_stall, written by hand -->", "<!-- /fig4 stall -->"),
     ("<!-- low bending: validation/published/low_bending.py, written by hand -->",
-     "<!-- /low bending -->"))
+     "<!-- /low bending -->"),
+    ("<!-- low beta: validation/published/low_beta.py, written by hand -->",
+     "<!-- /low beta -->"))
 THREED_BEGIN, THREED_END = ("<!-- 3d: examples/polyhedra/in.grow_tissue3d, written by hand -->",
                             "<!-- /3d -->")
 
