@@ -30,6 +30,14 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 from sweep_report import SECTION_BEGIN as BEGIN, SECTION_END as END  # noqa: E402
 
 
+def flagged(words):
+    """(option in force, word) for each word of a command line; an option is its own."""
+    flag = None
+    for w in words:
+        flag = w if w.startswith("--") else flag
+        yield flag, w
+
+
 def section(text):
     start, end = text.find(BEGIN), text.find(END)
     return text[start:end + len(END)] if 0 <= start < end else None
@@ -47,15 +55,9 @@ def remade_differs(scratch, words, committed):
     out = os.path.join(scratch, "validation", "sweeps")
     # each archive as a path in the scratch folder, whose validation/sweeps is the package's;
     # --sweeps (a folder of sweep files) from the package's folder, --accept as it is
-    args, flag = [], None
-    for w in words:
-        if w.startswith("--"):
-            flag = w
-            args.append(w)
-        elif flag == "--accept":
-            args.append(w)
-        else:
-            args.append(os.path.join(ROOT if flag == "--sweeps" else scratch, w))
+    args = [w if w == flag or flag == "--accept"
+            else os.path.join(ROOT if flag == "--sweeps" else scratch, w)
+            for flag, w in flagged(words)]
     result = subprocess.run([sys.executable, REPORT] + args + ["--out", out, "--doc", doc],
                             capture_output=True, text=True)
     if result.returncode != 0:
@@ -88,12 +90,8 @@ def main():
         return 1
     words = shlex.split(made_by.group(1))[1:]
     # the sweeps: every word after --figN that is not an option or an option's value
-    sources, flag = [], None
-    for w in words:
-        if w.startswith("--"):
-            flag = w
-        elif flag in ("--fig4", "--fig5", "--fig6"):
-            sources.append(w)
+    sources = [w for flag, w in flagged(words)
+               if w != flag and flag in ("--fig4", "--fig5", "--fig6")]
     folders = [s for s in sources if not s.endswith("_summary.csv")]
     if folders:
         print(f"check_sweep_archives: the section was made from sweep folders "

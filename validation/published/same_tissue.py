@@ -21,7 +21,7 @@ PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var
 
 def arguments(doc, name):
     """The options both comparisons take: the driver, lmp, the work folder, the CSV."""
-    p = argparse.ArgumentParser(description=doc.splitlines()[0])
+    p = argparse.ArgumentParser(description=" ".join(doc.split("\n\n")[0].split()))
     p.add_argument("binary", help="the driver build.sh made")
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
     p.add_argument("--work", default=os.path.join("/tmp", name))
