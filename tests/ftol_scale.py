@@ -7,12 +7,13 @@ Runs in.mesophyll_short with -var ftol_scale area for a few growth steps and che
 log, that every minimization ran with the tolerance ftol / phi, phi being the plain packing
 fraction of the state it starts from: for the first, the last thermo row of the 'run 0' that
 measures the tissue read; for the others, that of the minimization before (the stages after it
-move no vertex, so its phi is the next one's start). Each must stop on the force tolerance
-with the final 2-norm below its own tolerance, and above ftol itself for at least one (else the
-scaling is not seen). The same folder resumed from restart.N16.1 (-var resume) must run its
-first minimization, growth step 2, at the uninterrupted run's tolerance for that step, to 1e-9
-relative (its run 0 measures the restart's state, which is that of minimum 1). Then that bad values stop the run with an error naming them: an unknown
-ftol_scale, and area with -var fnorm rms.
+move no vertex, so its phi is the next one's start). Each must stop on the force tolerance with
+the final 2-norm below its own tolerance, and at least one above ftol itself (else the scaling
+is not seen). The same folder resumed from restart.N16.1 (-var resume) must run its first
+minimization, growth step 2, at the uninterrupted run's tolerance for that step, to 1e-9
+relative (its run 0 measures the restart's state, which is that of minimum 1). Last, two bad
+settings must stop the run with an error naming them: an unknown ftol_scale, and area with
+-var fnorm rms.
 Standard library only (regression.py's launcher).
 """
 import argparse
@@ -91,6 +92,9 @@ def main():
         if abs(tolerance - expected) > 1e-9 * expected:
             problems.append(f"minimization {k}: ftol {tolerance:.12g}, expected "
                             f"ftol / phi = {expected:.12g}")
+    if not len(used) == len(norms) == len(criteria):
+        problems.append(f"{len(used)} minimize commands, {len(norms)} final norms and "
+                        f"{len(criteria)} stopping criteria in the log")
     for k, (tolerance, norm, criterion) in enumerate(zip(used, norms, criteria), start=1):
         if criterion != "force tolerance":
             problems.append(f"minimization {k} stopped on '{criterion}'")
@@ -119,8 +123,8 @@ def main():
     if problems:
         return 1
     print(f"OK: {len(used)} minimizations at ftol / phi ({', '.join(f'{t:.4g}' for t in used)}), "
-          f"each stopped below its own; the resumed run's as the uninterrupted one's; bad ftol_scale "
-          f"values refused")
+          f"each stopped below its own; the resumed run's as the uninterrupted one's; "
+          f"bad ftol_scale values refused")
     return 0
 
 

@@ -66,7 +66,8 @@ BASE = {"fig4": {"lambda": 5, "delta_a": 0.5}, "fig5": {"beta": 100, "eps_b": 0.
 # Fig 6 sweep may leave its base point out and borrow those runs (borrow_base checks it).
 # The runs must share the stopping rule too: phi_stop here; the growth-step cap "steps" may
 # differ only where no borrowed run reached the smaller cap (borrow_base checks it).
-BORROW_RUN_VARIABLES = ("P0", "ftol", "phi_stop", "maxiter", "refine", "set", "tmaxadapt")
+BORROW_RUN_VARIABLES = ("P0", "ftol", "ftol_scale", "fnorm", "phi_stop", "maxiter", "refine", "set",
+                        "tmaxadapt")
 
 
 # --- ensembles and the comparison rule ----------------------------------------------------------

@@ -133,6 +133,9 @@ def main(argv=None):
     args = parser.parse_args(argv)
     if args.steps < 1:
         parser.error(f"--steps must be at least 1, got {args.steps}")
+    # growth_step() minimizes at ${ftol} itself; in.mesophyll's scaled tolerance is its own loop's
+    if any(name == "ftol_scale" and value != "none" for name, value in args.var):
+        parser.error("--var ftol_scale: only none here (growth_step minimizes at ${ftol})")
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
 
