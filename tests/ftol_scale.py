@@ -19,8 +19,6 @@ Standard library only (regression.py's launcher).
 import argparse
 import os
 import re
-import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -42,12 +40,8 @@ def thermo_phi(block):
 def refused(args, variables, words):
     """None if the run stops with an error whose text has every one of 'words', else why not."""
     with tempfile.TemporaryDirectory() as work:
-        shutil.copytree(args.example, work, dirs_exist_ok=True)
-        command = ["-in", "in.mesophyll_short", "-log", "log.bad", "-screen", "none"]
-        for name, value in variables:
-            command += ["-var", name, value]
-        command, env = regression.launch(args, command)
-        result = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
+        _, result = regression.start_example(args, work, "log.bad", variables,
+                                             capture_output=True, text=True)
         with open(os.path.join(work, "log.bad")) as f:
             text = f.read()
     errors = [line for line in text.splitlines() if line.startswith("ERROR")]

@@ -164,13 +164,19 @@ def launch(args, lmp_arguments):
             + shlex.split(args.postflags) + lmp_arguments), env
 
 
-def run_example(args, workdir, log_name):
+def start_example(args, workdir, log_name, variables, **run_options):
+    """Copy the example into workdir and run args.input there with 'variables' (name, value);
+    returns the command and its subprocess.run result, whatever the exit code."""
     shutil.copytree(args.example, workdir, dirs_exist_ok=True)
     command = ["-in", args.input, "-log", log_name, "-screen", "none"]
-    for name, value in args.var:
+    for name, value in variables:
         command += ["-var", name, value]
     command, env = launch(args, command)
-    result = subprocess.run(command, cwd=workdir, env=env)
+    return command, subprocess.run(command, cwd=workdir, env=env, **run_options)
+
+
+def run_example(args, workdir, log_name):
+    command, result = start_example(args, workdir, log_name, args.var)
     if result.returncode != 0:
         sys.exit(f"regression: {' '.join(command)} failed with exit code {result.returncode}")
     return os.path.join(workdir, log_name)
