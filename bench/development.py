@@ -34,9 +34,10 @@ def run(args, cells, ranks, workdir):
                                {"N": cells, "steps": args.steps, "refine": args.refine},
                                ranks=ranks, log="log.bench", mpirun=args.mpirun)
     growth = result.growth[cells]
+    loops = [loop for loop in result.loops if loop.minimization]
     rows = []
     for k in range(len(growth["step"])):
-        loop, (iterations, evaluations) = result.loops[k], result.minimizations[k]
+        loop, (iterations, evaluations) = loops[k], result.minimizations[k]
         rows.append({"cells": cells, "ranks": ranks, "refine": args.refine,
                      "step": int(growth["step"][k]), "phi_patch": growth["phi_patch"][k],
                      "calA": growth["calA"][k], "vertices": loop.atoms,

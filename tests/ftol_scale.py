@@ -13,7 +13,8 @@ is not seen). The same folder resumed from restart.N16.1 (-var resume) must run 
 minimization, growth step 2, at the uninterrupted run's tolerance for that step, to 1e-9
 relative (its run 0 measures the restart's state, which is that of minimum 1). Last, two bad
 settings must stop the run with an error naming them: an unknown ftol_scale, and area with
--var fnorm rms.
+-var fnorm rms. tools/mesophyll_run.py, which the benchmarks use, must tell the run 0's loop time
+from the minimizations'.
 Standard library only (regression.py's launcher).
 """
 import argparse
@@ -24,6 +25,9 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import regression    # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                "tools"))
+import mesophyll_run    # noqa: E402
 
 MINIMIZE = re.compile(r"^minimize\s+0\.0\s+([0-9.][0-9.eE+-]*)\s+\d+\s+\d+\s*$")
 FINAL_NORM = re.compile(r"^\s*Force two-norm initial, final = \S+ (\S+)$")
@@ -67,7 +71,8 @@ def main():
     problems = []
     with tempfile.TemporaryDirectory() as work:
         log = regression.run_example(args, work, "log.ftol_scale")
-        text = open(log).read().splitlines()
+        log_text = open(log).read()
+        text = log_text.splitlines()
         blocks = regression.thermo_blocks(log)
         args.var.append(("resume", "restart.N16.1"))
         resumed_log = regression.run_example(args, work, "log.resumed")
@@ -86,6 +91,12 @@ def main():
         if abs(tolerance - expected) > 1e-9 * expected:
             problems.append(f"minimization {k}: ftol {tolerance:.12g}, expected "
                             f"ftol / phi = {expected:.12g}")
+    # the benchmarks pair loop times with minimizations: the run 0's loop must not count
+    loops = mesophyll_run.loop_times(log_text)
+    kinds = [loop.minimization for loop in loops]
+    if kinds != [False] + [True] * args.steps:
+        problems.append(f"mesophyll_run.loop_times: minimization flags {kinds}, expected the "
+                        f"run 0 then {args.steps} minimizations")
     if not len(used) == len(norms) == len(criteria):
         problems.append(f"{len(used)} minimize commands, {len(norms)} final norms and "
                         f"{len(criteria)} stopping criteria in the log")

@@ -23,8 +23,12 @@ Run: workdir, returncode, wall (seconds of the LAMMPS process), output (captured
     checks as the functions below return them, failures (the checks that FAILED), growth
     ({N: growth_table()} of every growth.N<N>.txt in workdir).
 thermo_blocks(path)  -> [(columns, rows)] of every thermo table (tests/regression.py's reader).
-loop_times(log)      -> [Loop(seconds, procs, steps, atoms, cpu)] per "Loop time of ..." line;
-                        cpu: the "% CPU use" that follows, as a fraction (None if absent).
+loop_times(log)      -> [Loop(seconds, procs, steps, atoms, cpu, minimization)] per "Loop time
+                        of ..." line; cpu: the "% CPU use" that follows, as a fraction (None if
+                        absent); minimization: whether "Minimization stats:" follows before the
+                        next loop (a minimize, not a run such as ftol_scale area's run 0).
+minimization_loops(log) -> the loops of loop_times() that are minimizations, in the order of
+                        minimizations(log).
 minimizations(log)   -> [(iterations, force evaluations)] per minimization.
 check_lines(log)     -> [Check(minimum, step, text, failed, problems)] per fix dpoly/check line
                         ("fix dpoly/check: minimum K at step S: TEXT[; FAILED; PROBLEMS]").
@@ -48,13 +52,14 @@ from regression import thermo_blocks  # noqa: E402,F401  (the thermo-table reade
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpi_launcher  # noqa: E402
 
-Loop = collections.namedtuple("Loop", "seconds procs steps atoms cpu")
+Loop = collections.namedtuple("Loop", "seconds procs steps atoms cpu minimization")
 Check = collections.namedtuple("Check", "minimum step text failed problems")
 Run = collections.namedtuple("Run", "workdir returncode wall output log thermo loops "
                                     "minimizations checks failures growth")
 
 LOOP = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 CPU_USE = re.compile(r"^([0-9.]+)% CPU use")
+MINIMIZATION_STATS = "Minimization stats:"
 EVALS = re.compile(r"Iterations, force evaluations = (\d+) (\d+)")
 CHECK = re.compile(r"^fix dpoly/check: minimum (\d+) at step (\d+): (.*?)(?:; FAILED; (.*))?$",
                    re.MULTILINE)
@@ -74,11 +79,17 @@ def loop_times(log):
         m = LOOP.match(line)
         if m:
             loops.append(Loop(float(m.group(1)), int(m.group(2)), int(m.group(3)),
-                              int(m.group(4)), None))
+                              int(m.group(4)), None, False))
         m = CPU_USE.match(line)
         if m and loops and loops[-1].cpu is None:
             loops[-1] = loops[-1]._replace(cpu=float(m.group(1)) / 100)
+        if line.startswith(MINIMIZATION_STATS) and loops:
+            loops[-1] = loops[-1]._replace(minimization=True)
     return loops
+
+
+def minimization_loops(log):
+    return [loop for loop in loop_times(log) if loop.minimization]
 
 
 def minimizations(log):
