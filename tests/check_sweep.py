@@ -19,7 +19,10 @@ with tools/sweep.py and runs examples/sweep/in.sweep as `mpirun -np 2 lmp -parti
   failures     a sweep of two runs on 2 partitions: one from a tissue with a ring folded through
                itself (fix dpoly/check flags its minima), one from a data file LAMMPS cannot
                read (the error stops the job); run again, the sweep completes and the summary
-               says failed and error.
+               says failed and error;
+  error note   a run whose log ends in an ERROR with quotes of both kinds and a $: the state
+               file tools/sweep.py state writes marks it finished with the error, and LAMMPS
+               reads the state file (no quote ends or unbalances its note).
 
 plan must refuse bad sweep files with a message naming the bad value. The summary of the
 interrupted sweep must say what the growth tables say: steps, delta_phi_plus,
@@ -32,7 +35,7 @@ import argparse
 import csv
 import math
 import os
-import shutil
+import re
 import signal
 import subprocess
 import sys
@@ -273,6 +276,36 @@ def tangled_tissue(source, target):
         f.write("\n".join(lines) + "\n")
 
 
+def check_error_note(args, scratch):
+    """A run whose last attempt stopped with an error the sweep must mark and skip, whatever the
+    message holds: in.sweep includes the state file tools/sweep.py state writes, and a quote of
+    either kind or a $ from the message must not end or unbalance its note (fire/nph's
+    'cannot settle' error names "the largest force's cell": that stopped a whole sweep)."""
+    folder = os.path.join(scratch, "error_note")
+    plan(TINY, folder)
+    run = os.path.join(folder, "runs", runs_of(folder)[0])
+    message = ("ERROR: min_style fire/nph: the largest force's cell; \"quoted\" ${x} $y "
+               "'single' # not a comment (src/x.cpp:1)")
+    with open(os.path.join(run, "log.lammps"), "w") as f:
+        f.write(f"sweep: attempt 1\n{message}\n")
+    subprocess.run([sys.executable, SWEEP, "state"], cwd=run, check=True)
+    with open(os.path.join(run, "read_state.lmp"), "w") as f:
+        f.write('include state.lmp\nprint "NOTE[${sweep_note}] SKIP[${skip}]"\n')
+    result = subprocess.run([args.lmp, "-log", "none", "-in", "read_state.lmp"], cwd=run,
+                            capture_output=True, text=True)
+    note = re.search(r"^NOTE\[(.*)\] SKIP\[(\d)\]$", result.stdout, re.M)
+    expect(result.returncode == 0 and note is not None,
+           f"state.lmp after an error with quotes: LAMMPS exit {result.returncode}, "
+           f"{(result.stdout + result.stderr).strip().splitlines()[-2:]}")
+    if note:
+        expect(note.group(2) == "1" and "the largest force`s cell" in note.group(1) and
+               "not a comment" in note.group(1),
+               f"state.lmp after an error with quotes: note '{note.group(1)}', skip "
+               f"{note.group(2)}")
+    expect(open(os.path.join(run, "finished")).read().startswith("error ERROR: min_style"),
+           "the run stopped with an error is not marked finished with it")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--lmp", required=True)
@@ -285,6 +318,7 @@ def main():
         if os.environ.get("SWEEP_KEEP"):    # a folder to keep the sweeps in, to look at
             scratch = os.environ["SWEEP_KEEP"]
         check_bad_plans(scratch)
+        check_error_note(args, scratch)
         straight, interrupted = (os.path.join(scratch, n) for n in ("straight", "interrupted"))
         for folder in (straight, interrupted):
             plan(TINY, folder)

@@ -384,7 +384,9 @@ def state(args):
         f.write(f"variable skip equal {skip}\n")
         f.write(f"variable resuming equal {int(resume is not None)}\n")
         f.write(f"variable resume_from string {resume or 'none'}\n")
-        printable = note.replace('"', "'").replace("$", "")    # LAMMPS would expand a $
+        # LAMMPS would expand a $, and a quote of either kind in the note (an error message
+        # such as fire/nph's "the largest force's cell") would end or unbalance the string
+        printable = note.replace('"', "`").replace("'", "`").replace("$", "")
         f.write(f'variable sweep_note string "{printable}"\n')
 
 
