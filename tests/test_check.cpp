@@ -14,6 +14,7 @@
 #include <iterator>
 #include <memory>
 #include <random>
+#include <regex>
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -131,6 +132,39 @@ TEST(Check, SegmentPastHalfTheBoxIsReported)
   EXPECT_THAT(error,
               HasSubstr("1 ring segments are not shorter than half the box (first: segment "
                         "5-6 of cell 2, 4.25 long, 4.25 in x, half the box length 4)"));
+}
+
+// Where the minimizer stops early, the ring segment shortest relative to its l0 is named (a
+// diagnosis: a collapsed segment keeps FIRE from settling). Segment 7-8 of cell 2 is 0.01 long
+// for an l0 of 0.5 (2%), all others at their l0, 4-5 of cell 1 too though only 0.008 long; 7-8
+// straddles x = 20, where two ranks split the box, so that its vertices lie on different ranks.
+// The text is the same on this rank alone.
+TEST(Check, UnconvergedMinimumNamesTheShortestSegment)
+{
+  Tissue t;
+  t.cells = {{{{1.0, 1.0}, {2.0, 1.0}, {2.0, 2.0}, {1.008, 2.0}, {1.0, 2.0}}},
+             {{{19.0, 5.0}, {19.995, 5.0}, {20.005, 5.0}, {21.0, 5.0}, {21.0, 6.0}, {19.0, 6.0}}}};
+  const std::string input = contact_commands(write_tissue(t, "collapsed_segment.data")) +
+      "set atom 7 d_l0 0.5\nfix check all dpoly/check action error\n"
+      "min_modify dmax 1.0e-3\nminimize 0.0 0.0 3 30";    // dmax: it stays collapsed
+  LammpsSession parallel, serial(self_comm());
+  const std::string error = parallel.try_run(input);
+  EXPECT_EQ(error, serial.try_run(input));
+  const std::regex named("the minimizer stopped without converging \\(max iterations\\); shortest "
+                         "ring segment relative to its preferred length: (\\d+)-(\\d+) of cell "
+                         "(\\d+), ([0-9.e+-]+) long, ([0-9.e+-]+)% of l0 = ([0-9.e+-]+)");
+  std::smatch found;
+  ASSERT_TRUE(std::regex_search(error, found, named)) << error;
+  EXPECT_EQ(found[1].str(), "7");
+  EXPECT_EQ(found[2].str(), "8");
+  EXPECT_EQ(found[3].str(), "2");
+  EXPECT_EQ(found[6].str(), "0.5");
+  // the length and percentage of the minimum the check saw (3 significant digits)
+  const std::vector<double> x = parallel.gather("x", 3);
+  const double r = std::hypot(x[3 * 7] - x[3 * 6], x[3 * 7 + 1] - x[3 * 6 + 1]);
+  EXPECT_NEAR(std::stod(found[4].str()), r, 5.0e-3 * r);
+  EXPECT_NEAR(std::stod(found[5].str()), 100.0 * r / 0.5, 5.0e-3 * 100.0 * r / 0.5);
+  EXPECT_LT(std::stod(found[5].str()), 10.0) << "still collapsed: " << error;
 }
 
 TEST(Check, BadInput)

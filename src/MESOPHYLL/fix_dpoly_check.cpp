@@ -32,6 +32,7 @@ namespace {
 struct RingPoint {
   tagint tag;
   double x, y;
+  double l0;    // preferred length of the segment to the vertex's ring successor
 };
 }    // namespace
 
@@ -39,14 +40,14 @@ struct RingPoint {
 // unwrapped coordinates: fix dpoly/cells checks it)
 class FixDPolyCheck::UnwrappedVertices {
  public:
-  UnwrappedVertices(Atom *atom, Domain *domain, int groupbit, MPI_Comm world)
+  UnwrappedVertices(Atom *atom, Domain *domain, int groupbit, const double *l0, MPI_Comm world)
   {
     std::vector<RingPoint> mine;
     for (int i = 0; i < atom->nlocal; i++) {
       if (!(atom->mask[i] & groupbit)) continue;
       double xu[3];
       domain->unmap(atom->x[i], atom->image[i], xu);
-      mine.push_back({atom->tag[i], xu[0], xu[1]});
+      mine.push_back({atom->tag[i], xu[0], xu[1], l0[i]});
     }
     all = DPoly::gather_on_all_ranks(std::move(mine), world);
     for (const auto &p : all) by_tag[p.tag] = &p;
@@ -138,7 +139,8 @@ void FixDPolyCheck::check()
     problems += fmt::format("; the pressure P = {} is not finite", pressure_value);
   problems += not_finite;
   if (!converged)
-    problems += fmt::format("; the minimizer stopped without converging ({})", min->stopstr);
+    problems += fmt::format("; the minimizer stopped without converging ({}){}", min->stopstr,
+                            geometry.shortest_segment);
   if (std::isfinite(pressure_error) && pressure_error > pressure_tolerance)
     problems +=
         fmt::format("; |P - P0|/P0 = {:.3g} exceeds {:.3g}", pressure_error, pressure_tolerance);
@@ -205,7 +207,9 @@ FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry()
       found.inverted++;
     }
   tagint first_tangled = 0;
-  const UnwrappedVertices vertices(atom, domain, cells->groupbit, world);
+  const UnwrappedVertices vertices(
+      atom, domain, cells->groupbit,
+      DPoly::vertex_state(atom, error, "Fix dpoly/check").preferred_length, world);
   found.tangled = tangled_cells(vertices, first_tangled);
   const DPoly::Interpenetration overlapping = interpenetrating_cells(vertices);
   found.pairs = overlapping.pairs;
@@ -225,6 +229,7 @@ FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry()
                                        : fmt::format("cells {} and {}", pair[0], pair[1]));
   }
   found.problems += geometry_problems(vertices);
+  found.shortest_segment = shortest_segment(vertices);
   return found;
 }
 
@@ -288,6 +293,38 @@ int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &firs
     }
   }
   return tangled;
+}
+
+/* ----------------------------------------------------------------------
+   the ring segment shortest relative to its l0: the likeliest reason a minimizer stopped early
+   (a segment collapsed to a small fraction of l0 makes the segment and bending forces change
+   faster than any step resolves). Ties: the lowest vertex ID, the same on any number of ranks.
+------------------------------------------------------------------------- */
+
+std::string FixDPolyCheck::shortest_segment(const UnwrappedVertices &vertices)
+{
+  double shortest = INFINITY, length = 0.0, l0 = 0.0;
+  tagint first = 0, next = 0, cell_id = 0;
+  for (int cell = 0; cell < cells->ncells(); cell++) {
+    const std::vector<tagint> &ring = cells->ring(cell);
+    const int n = (int) ring.size();
+    for (int i = 0; i < n; i++) {
+      const RingPoint &a = vertices.at(ring[i]), &b = vertices.at(ring[(i + 1) % n]);
+      const double r = std::hypot(b.x - a.x, b.y - a.y);
+      const double ratio = r / a.l0;
+      if (!(ratio < shortest || (ratio == shortest && a.tag < first))) continue;    // nan too
+      shortest = ratio;
+      length = r;
+      l0 = a.l0;
+      first = a.tag;
+      next = b.tag;
+      cell_id = cells->cell_id(cell);
+    }
+  }
+  if (!first) return "";
+  return fmt::format("; shortest ring segment relative to its preferred length: {}-{} of cell "
+                     "{}, {:.3g} long, {:.3g}% of l0 = {:.3g}",
+                     first, next, cell_id, length, 100.0 * shortest, l0);
 }
 
 /* ----------------------------------------------------------------------

@@ -23,11 +23,12 @@ namespace LAMMPS_NS {
 // stopped, the final force norm, |P - P0|/P0, non-finite energy, pressure, positions or box, and
 // geometry no tissue can have. Polygons (fix dpoly/cells): cells with area <= 0, rings that
 // cross themselves, cells that interpenetrate, packing fractions outside (0, 1] and ring
-// segments not shorter than half the box. Polyhedra (fix dpoly3d/cells,
-// dpoly3d_surface_check.h): cells with volume <= 0, faces turned into their cell, a vertex
-// inside another cell, a packing fraction outside (0, 1]. Warns (default) or stops with an
-// error that names what failed. The first stage after a minimization: it sees the minimum
-// before any other stage changes it.
+// segments not shorter than half the box; where the minimizer did not converge, the ring segment
+// shortest relative to its l0 is named too (a collapsed one keeps FIRE from settling). Polyhedra
+// (fix dpoly3d/cells, dpoly3d_surface_check.h): cells with volume <= 0, faces turned into their
+// cell, a vertex inside another cell, a packing fraction outside (0, 1]. Warns (default) or
+// stops with an error that names what failed. The first stage after a minimization: it sees the
+// minimum before any other stage changes it.
 class FixDPolyCheck : public FixDPolyStage {
  public:
   FixDPolyCheck(class LAMMPS *, int, char **);
@@ -51,6 +52,8 @@ class FixDPolyCheck : public FixDPolyStage {
     int tangled = 0;     // rings that cross themselves (surfaces with faces turned inward)
     int pairs = 0;       // pairs of cells that interpenetrate
     std::string problems;
+    // polygons: "; shortest ring segment ...", appended where the minimizer did not converge
+    std::string shortest_segment;
   };
   void check();
   std::string non_finite_state();
@@ -59,6 +62,8 @@ class FixDPolyCheck : public FixDPolyStage {
   class UnwrappedVertices;    // every vertex on every rank, gathered once per check
   int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
   DPoly::Interpenetration interpenetrating_cells(const UnwrappedVertices &vertices);
+  // "; ..." naming the ring segment shortest relative to its l0 (a diagnosis, not a failure)
+  std::string shortest_segment(const UnwrappedVertices &vertices);
   // "; ..." for each impossible geometry, "" if none
   std::string geometry_problems(const UnwrappedVertices &vertices);
 };
