@@ -102,7 +102,9 @@ def fake_results(folder, unconverged=()):
         failed = (point, seed) == FAILED
         # fix dpoly/check's words for a tangled ring and for the iteration limit
         problem = ("; FAILED; 1 rings cross themselves (first: cell 2)" if failed else
-                   "; FAILED; the minimizer stopped without converging (max iterations)"
+                   "; FAILED; the minimizer stopped without converging (max iterations), "
+                   "shortest ring segment relative to its preferred length: 7-8 of cell 2, "
+                   "0.016 long, 3.2% of l0 = 0.5"
                    if (point, seed) in unconverged else "")
         with open(os.path.join(where, "log.lammps"), "w") as f:
             for k in range(1, 4):

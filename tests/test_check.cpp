@@ -150,7 +150,7 @@ TEST(Check, UnconvergedMinimumNamesTheShortestSegment)
   LammpsSession parallel, serial(self_comm());
   const std::string error = parallel.try_run(input);
   EXPECT_EQ(error, serial.try_run(input));
-  const std::regex named("the minimizer stopped without converging \\(max iterations\\); shortest "
+  const std::regex named("the minimizer stopped without converging \\(max iterations\\), shortest "
                          "ring segment relative to its preferred length: (\\d+)-(\\d+) of cell "
                          "(\\d+), ([0-9.e+-]+) long, ([0-9.e+-]+)% of l0 = ([0-9.e+-]+)");
   std::smatch found;

@@ -296,9 +296,10 @@ int FixDPolyCheck::tangled_cells(const UnwrappedVertices &vertices, tagint &firs
 }
 
 /* ----------------------------------------------------------------------
-   the ring segment shortest relative to its l0: the likeliest reason a minimizer stopped early
-   (a segment collapsed to a small fraction of l0 makes the segment and bending forces change
-   faster than any step resolves). Ties: the lowest vertex ID, the same on any number of ranks.
+   the ring segment shortest relative to its l0, named where a minimizer stopped early: where one
+   had collapsed to a small fraction of l0, its segment and bending forces changed faster than
+   FIRE's steps resolved (Fig 6 at high pressure). Ties: the lowest vertex ID (every rank holds
+   every vertex here, so every rank finds the same segment).
 ------------------------------------------------------------------------- */
 
 std::string FixDPolyCheck::shortest_segment(const UnwrappedVertices &vertices)
@@ -322,7 +323,7 @@ std::string FixDPolyCheck::shortest_segment(const UnwrappedVertices &vertices)
     }
   }
   if (!first) return "";
-  return fmt::format("; shortest ring segment relative to its preferred length: {}-{} of cell "
+  return fmt::format(", shortest ring segment relative to its preferred length: {}-{} of cell "
                      "{}, {:.3g} long, {:.3g}% of l0 = {:.3g}",
                      first, next, cell_id, length, 100.0 * shortest, l0);
 }

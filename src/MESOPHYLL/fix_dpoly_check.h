@@ -52,7 +52,8 @@ class FixDPolyCheck : public FixDPolyStage {
     int tangled = 0;     // rings that cross themselves (surfaces with faces turned inward)
     int pairs = 0;       // pairs of cells that interpenetrate
     std::string problems;
-    // polygons: "; shortest ring segment ...", appended where the minimizer did not converge
+    // polygons: ", shortest ring segment ...", appended to "the minimizer stopped without
+    // converging (...)": one problem, so that tools read it as non-convergence still
     std::string shortest_segment;
   };
   void check();
@@ -62,7 +63,7 @@ class FixDPolyCheck : public FixDPolyStage {
   class UnwrappedVertices;    // every vertex on every rank, gathered once per check
   int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
   DPoly::Interpenetration interpenetrating_cells(const UnwrappedVertices &vertices);
-  // "; ..." naming the ring segment shortest relative to its l0 (a diagnosis, not a failure)
+  // ", ..." naming the ring segment shortest relative to its l0 (a diagnosis, not a failure)
   std::string shortest_segment(const UnwrappedVertices &vertices);
   // "; ..." for each impossible geometry, "" if none
   std::string geometry_problems(const UnwrappedVertices &vertices);
