@@ -285,7 +285,7 @@ def check_error_note(args, scratch):
     plan(TINY, folder)
     run = os.path.join(folder, "runs", runs_of(folder)[0])
     message = ("ERROR: min_style fire/nph: the largest force's cell; \"quoted\" ${x} $y "
-               "'single' # not a comment (src/x.cpp:1)")
+               "'single' \"\"\"triple # not a comment (src/x.cpp:1)")
     with open(os.path.join(run, "log.lammps"), "w") as f:
         f.write(f"sweep: attempt 1\n{message}\n")
     subprocess.run([sys.executable, SWEEP, "state"], cwd=run, check=True)

@@ -379,14 +379,15 @@ def state(args):
                 note = "starts"
             with open("times.txt", "a") as f:
                 f.write(f"start {time.time():.3f}\n")
+    # LAMMPS would expand a $, and a quote of either kind in the note (an error message such as
+    # fire/nph's "the largest force's cell") would end or unbalance the string; LAMMPS counts
+    # triple quotes on the comment line too
+    printable = note.replace('"', "`").replace("'", "`").replace("$", "")
     with open("state.lmp", "w") as f:
-        f.write(f"# run {record['id']}: {note} (written by tools/sweep.py state)\n")
+        f.write(f"# run {record['id']}: {printable} (written by tools/sweep.py state)\n")
         f.write(f"variable skip equal {skip}\n")
         f.write(f"variable resuming equal {int(resume is not None)}\n")
         f.write(f"variable resume_from string {resume or 'none'}\n")
-        # LAMMPS would expand a $, and a quote of either kind in the note (an error message
-        # such as fire/nph's "the largest force's cell") would end or unbalance the string
-        printable = note.replace('"', "`").replace("'", "`").replace("$", "")
         f.write(f'variable sweep_note string "{printable}"\n')
 
 
