@@ -34,7 +34,7 @@ def run(args, cells, ranks, workdir):
                                {"N": cells, "steps": args.steps, "refine": args.refine},
                                ranks=ranks, log="log.bench", mpirun=args.mpirun)
     growth = result.growth[cells]
-    loops = [loop for loop in result.loops if loop.minimization]
+    loops = mesophyll_run.minimization_loops(result.loops)
     rows = []
     for k in range(len(growth["step"])):
         loop, (iterations, evaluations) = loops[k], result.minimizations[k]

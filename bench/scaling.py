@@ -93,7 +93,8 @@ def develop(args, data, cells, ranks, steps, work):
     log, cpu_file = os.path.join(folder, "log.scaling"), os.path.join(folder, "process_cpu_s")
     text = open(log).read() if os.path.exists(log) else ""
     finished = "Total wall time" in text
-    if finished or (args.report_only and len(mesophyll_run.minimization_loops(text)) >= 2):
+    done = mesophyll_run.minimization_loops(mesophyll_run.loop_times(text))
+    if finished or (args.report_only and len(done) >= 2):
         run = mesophyll_run.read(folder, "log.scaling")
         cpu = float(open(cpu_file).read()) if os.path.exists(cpu_file) else None
         print(f"(read the {'finished' if finished else 'UNFINISHED (killed)'} run in {folder}: "
@@ -121,7 +122,7 @@ def rows_of(cells, ranks, run, rule):
     memory = [tuple(float(v) for v in m.groups()) for m in MEMORY.finditer(run.log)]
     largest = max(memory, key=lambda m: m[2])
     rows = []
-    loops = [loop for loop in run.loops if loop.minimization]
+    loops = mesophyll_run.minimization_loops(run.loops)
     for k, (loop, (iterations, _)) in enumerate(zip(loops, run.minimizations)):
         cpu = loop.seconds * (loop.cpu or 1.0) * loop.procs
         rows.append({"kind": "minimization", "cells": cells, "ranks": ranks,

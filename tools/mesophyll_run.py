@@ -27,8 +27,8 @@ loop_times(log)      -> [Loop(seconds, procs, steps, atoms, cpu, minimization)] 
                         of ..." line; cpu: the "% CPU use" that follows, as a fraction (None if
                         absent); minimization: whether "Minimization stats:" follows before the
                         next loop (a minimize, not a run such as ftol_scale area's run 0).
-minimization_loops(log) -> the loops of loop_times() that are minimizations, in the order of
-                        minimizations(log).
+minimization_loops(loops) -> those of loop_times()' loops that are minimizations, in the
+                        order of minimizations(log).
 minimizations(log)   -> [(iterations, force evaluations)] per minimization.
 check_lines(log)     -> [Check(minimum, step, text, failed, problems)] per fix dpoly/check line
                         ("fix dpoly/check: minimum K at step S: TEXT[; FAILED; PROBLEMS]").
@@ -88,8 +88,8 @@ def loop_times(log):
     return loops
 
 
-def minimization_loops(log):
-    return [loop for loop in loop_times(log) if loop.minimization]
+def minimization_loops(loops):
+    return [loop for loop in loops if loop.minimization]
 
 
 def minimizations(log):
