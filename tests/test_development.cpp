@@ -144,8 +144,11 @@ TEST(Development, RestartAfterTheFirstStepReproducesTheRest)
               protocol_fixes());
   EXPECT_EQ(resumed.thermo("f_grow[1]"), 1.0) << "the growth step count survives";
   EXPECT_NEAR(resumed.thermo("f_grow[4]"), reference[0].phi, 1e-14) << "and phi at the minimum";
+  EXPECT_EQ(resumed.thermo("f_check[9]"), 1.0) << "the count of checked minima survives";
   const std::vector<Minimum> rest = develop(resumed, 2);
   expect_same_minima(rest, {reference[1], reference[2]}, "restart");
+  EXPECT_EQ(resumed.thermo("f_check[9]"), straight->thermo("f_check[9]"))
+      << "the resumed run numbers its minima on, as the straight run";
 }
 
 TEST(Development, WithVertexInsertionStaysAtP0OnAnyRankCount)

@@ -65,8 +65,8 @@ class FixDPolyCheck::UnwrappedVertices {
 };
 
 FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
-    FixDPolyStage(lmp, narg, arg, CHECK, 8), target_pressure(0.0), pressure_tolerance(1.0e-6),
-    stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
+    FixDPolyStage(lmp, narg, arg, CHECK, 9), target_pressure(0.0), pressure_tolerance(1.0e-6),
+    stop_on_failure(0), minima(0), last{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}
 {
   parse_keywords(3, narg, arg, [&](const char *key, const char *value) {
     if (strcmp(key, "pressure") == 0) {
@@ -83,7 +83,6 @@ FixDPolyCheck::FixDPolyCheck(LAMMPS *lmp, int narg, char **arg) :
       return false;
     return true;
   });
-  restart_global = 0;    // a check keeps nothing across runs
 }
 
 // only after minimizations: it reads the minimizer's stop condition and force norm
@@ -130,6 +129,7 @@ void FixDPolyCheck::check()
   last[5] = min->niter;
   last[6] = min->neval;
   last[7] = geometry.pairs;
+  last[8] = minima;
 
   std::string problems;
   if (!std::isfinite(energy) || !std::isfinite(force_norm))
@@ -423,4 +423,17 @@ std::string FixDPolyCheck::geometry_problems(const UnwrappedVertices &vertices)
 double FixDPolyCheck::compute_vector(int n)
 {
   return last[n];
+}
+
+std::vector<double> FixDPolyCheck::restart_state() const
+{
+  return {(double) minima};
+}
+
+bool FixDPolyCheck::restore_state(const std::vector<double> &state)
+{
+  if (state.size() != 1 || !(state[0] >= 0.0)) return false;
+  minima = (bigint) state[0];
+  last[8] = minima;
+  return true;
 }

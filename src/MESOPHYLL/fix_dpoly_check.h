@@ -16,6 +16,7 @@ FixStyle(dpoly/check,FixDPolyCheck);
 #include "fix_dpoly_stage.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -42,10 +43,13 @@ class FixDPolyCheck : public FixDPolyStage {
   int stop_on_failure;
   bigint minima;
   bool triclinic_warned = false;
+  // the minima checked so far, so that a resumed run numbers its minima on from the restart
+  std::vector<double> restart_state() const override;
+  bool restore_state(const std::vector<double> &) override;
   // converged, force norm, |P - P0|/P0, inverted cells, tangled cells (3d: cells with faces
-  // turned inward), iterations, force evaluations, pairs of interpenetrating cells (appended
-  // last: tools read the others by index)
-  double last[8];
+  // turned inward), iterations, force evaluations, pairs of interpenetrating cells, minima
+  // checked so far (appended last: tools read the others by index)
+  double last[9];
   // what the geometry tests found: vector elements 4, 5 and 8, and "; ..." for each problem
   struct Geometry {
     int inverted = 0;    // cells with area (volume) <= 0
