@@ -62,7 +62,7 @@ class SweepFile:
     """A sweep file: keyword lines, '#' comments; relative paths are relative to the file."""
 
     KEYWORDS = {"name", "protocol", "parameters", "set", "vary", "point", "seeds", "tissue",
-                "fixed", "growth"}
+                "fixed", "growth", "part_of"}
 
     def __init__(self, path):
         self.path = path
@@ -73,6 +73,7 @@ class SweepFile:
         self.set = "default"
         self.axes, self.points, self.seeds, self.tissues, self.fixed = [], [], [], [], {}
         self.growth = None
+        self.part_of = None    # the sweep file of which this one plans a part
         with open(path) as f:
             for number, line in enumerate(f, 1):
                 words = line.split("#")[0].split()
@@ -87,7 +88,7 @@ class SweepFile:
                     sys.exit(f"{where}: '{key}' needs a value")
                 if key == "name":
                     self.name = values[0]
-                elif key in ("protocol", "parameters"):
+                elif key in ("protocol", "parameters", "part_of"):
                     setattr(self, key, os.path.normpath(os.path.join(here, values[0])))
                 elif key == "set":
                     self.set = values[0]
@@ -123,7 +124,10 @@ class SweepFile:
                     if not self.growth[0] > 0 or (self.growth[1] or 1) < 1:
                         sys.exit(f"{where}: the total growth and the step cap must be > 0, not "
                                  f"'{' '.join(values)}'")
-        for what, path_ in (("protocol", self.protocol), ("parameters", self.parameters)):
+        files = [("protocol", self.protocol), ("parameters", self.parameters)]
+        if self.part_of:
+            files.append(("whole sweep's (part_of)", self.part_of))
+        for what, path_ in files:
             if not os.path.isfile(path_):
                 sys.exit(f"{self.path}: the {what} file {path_} does not exist")
         if not self.tissues:
@@ -269,7 +273,32 @@ def planned_runs(sweep_file):
     width = len(str(len(runs)))
     for k, run in enumerate(runs, 1):
         run["id"] = f"{k:0{width}d}"
+    if sweep.part_of:
+        check_part(sweep, runs)
     return sweep, known, runs
+
+
+def run_key(sweep, run):
+    """What makes two planned runs the same run, whichever sweep file plans them."""
+    return (sweep.protocol, sweep.parameters, run["tissue"],
+            tuple(sorted(run["values"].items())))
+
+
+def check_part(part, runs):
+    """A part of a sweep (part_of) plans only runs that the whole plans too, so that parts run
+    in different sessions or on different machines add up to the whole; exits naming the first
+    run that the whole does not have."""
+    if os.path.abspath(part.part_of) == os.path.abspath(part.path):
+        sys.exit(f"{part.path}: a sweep cannot be a part of itself (part_of)")
+    whole, _, whole_runs = planned_runs(part.part_of)
+    if whole.part_of:
+        sys.exit(f"{part.path}: its whole {part.part_of} is a part of another sweep itself")
+    keys = {run_key(whole, run) for run in whole_runs}
+    for run in runs:
+        if run_key(part, run) not in keys:
+            sys.exit(f"{part.path}: run {run['id']} ({run['point']}, seed {run['seed']}, tissue "
+                     f"{os.path.basename(run['tissue'])}) is not a run of the whole sweep "
+                     f"{part.part_of} (part_of): a part plans only the whole's runs")
 
 
 def plan(args):
