@@ -119,7 +119,7 @@ void FixDPolyCheck::check()
   // a state with non-finite coordinates has no geometry to test (and the tests would not end)
   const std::string not_finite = non_finite_state();
   Geometry geometry;
-  if (not_finite.empty()) geometry = cells ? polygon_geometry() : polyhedron_geometry();
+  if (not_finite.empty()) geometry = cells ? polygon_geometry(!converged) : polyhedron_geometry();
 
   last[0] = converged ? 1.0 : 0.0;
   last[1] = force_norm;
@@ -197,7 +197,7 @@ std::string FixDPolyCheck::non_finite_state()
    packing fractions and segments
 ------------------------------------------------------------------------- */
 
-FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry()
+FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry(bool name_shortest_segment)
 {
   Geometry found;
   tagint first_inverted = 0;
@@ -229,7 +229,7 @@ FixDPolyCheck::Geometry FixDPolyCheck::polygon_geometry()
                                        : fmt::format("cells {} and {}", pair[0], pair[1]));
   }
   found.problems += geometry_problems(vertices);
-  found.shortest_segment = shortest_segment(vertices);
+  if (name_shortest_segment) found.shortest_segment = shortest_segment(vertices);
   return found;
 }
 

@@ -62,7 +62,9 @@ class FixDPolyCheck : public FixDPolyStage {
   };
   void check();
   std::string non_finite_state();
-  Geometry polygon_geometry();
+  // name_shortest_segment: fill in shortest_segment (only read where the minimizer did not
+  // converge); the same on every rank
+  Geometry polygon_geometry(bool name_shortest_segment);
   Geometry polyhedron_geometry();
   class UnwrappedVertices;    // every vertex on every rank, gathered once per check
   int tangled_cells(const UnwrappedVertices &vertices, tagint &first);
