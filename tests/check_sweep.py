@@ -20,9 +20,9 @@ with tools/sweep.py and runs examples/sweep/in.sweep as `mpirun -np 2 lmp -parti
                itself (fix dpoly/check flags its minima), one from a data file LAMMPS cannot
                read (the error stops the job); run again, the sweep completes and the summary
                says failed and error;
-  error note   a run whose log ends in an ERROR with quotes of both kinds and a $: the state
-               file tools/sweep.py state writes marks it finished with the error, and LAMMPS
-               reads the state file (no quote ends or unbalances its note).
+  error note   a run whose log ends in an ERROR with quotes of both kinds and a $, the other
+               runs finished: in.sweep on one partition marks it finished with the error,
+               prints its note (no quote ends or unbalances it) and starts no run.
 
 plan must refuse bad sweep files with a message naming the bad value. The summary of the
 interrupted sweep must say what the growth tables say: steps, delta_phi_plus,
@@ -278,32 +278,36 @@ def tangled_tissue(source, target):
 
 def check_error_note(args, scratch):
     """A run whose last attempt stopped with an error the sweep must mark and skip, whatever the
-    message holds: in.sweep includes the state file tools/sweep.py state writes, and a quote of
-    either kind or a $ from the message must not end or unbalance its note (fire/nph's
-    'cannot settle' error names "the largest force's cell": that stopped a whole sweep)."""
+    message holds: in.sweep includes the state file tools/sweep.py state writes and prints its
+    note, and a quote of either kind or a $ from the message must not end or unbalance it
+    (fire/nph's 'cannot settle' error names "the largest force's cell": that stopped a whole
+    sweep). The sweep runs through in.sweep itself, on one partition, with every other run
+    marked finished, so that nothing but the states is read."""
     folder = os.path.join(scratch, "error_note")
     plan(TINY, folder)
-    run = os.path.join(folder, "runs", runs_of(folder)[0])
+    first, *others = runs_of(folder)
+    for other in others:
+        with open(os.path.join(folder, "runs", other, "finished"), "w") as f:
+            f.write("finished\n")
+    run = os.path.join(folder, "runs", first)
     message = ("ERROR: min_style fire/nph: the largest force's cell; \"quoted\" ${x} $y "
                "'single' \"\"\"triple # not a comment (src/x.cpp:1)")
     with open(os.path.join(run, "log.lammps"), "w") as f:
         f.write(f"sweep: attempt 1\n{message}\n")
-    subprocess.run([sys.executable, SWEEP, "state"], cwd=run, check=True)
-    with open(os.path.join(run, "read_state.lmp"), "w") as f:
-        f.write('include state.lmp\nprint "NOTE[${sweep_note}] SKIP[${skip}]"\n')
-    result = subprocess.run([args.lmp, "-log", "none", "-in", "read_state.lmp"], cwd=run,
-                            capture_output=True, text=True)
-    note = re.search(r"^NOTE\[(.*)\] SKIP\[(\d)\]$", result.stdout, re.M)
+    result = subprocess.run([args.lmp, "-log", "none", "-in", IN_SWEEP], cwd=folder,
+                            capture_output=True, text=True, timeout=args.timeout)
+    note = re.search(rf"^sweep: run {first} (.*)$", result.stdout, re.M)
     expect(result.returncode == 0 and note is not None,
-           f"state.lmp after an error with quotes: LAMMPS exit {result.returncode}, "
+           f"in.sweep after an error with quotes: LAMMPS exit {result.returncode}, "
            f"{(result.stdout + result.stderr).strip().splitlines()[-2:]}")
     if note:
-        expect(note.group(2) == "1" and "the largest force`s cell" in note.group(1) and
-               "not a comment" in note.group(1),
-               f"state.lmp after an error with quotes: note '{note.group(1)}', skip "
-               f"{note.group(2)}")
+        expect("marked as error, skipped" in note.group(1) and
+               "the largest force`s cell" in note.group(1) and "not a comment" in note.group(1),
+               f"in.sweep after an error with quotes: note '{note.group(1)}'")
     expect(open(os.path.join(run, "finished")).read().startswith("error ERROR: min_style"),
            "the run stopped with an error is not marked finished with it")
+    expect("sweep: attempt of run" not in result.stdout,
+           "in.sweep started a run although every run was finished or marked as error")
 
 
 def main():
