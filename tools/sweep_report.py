@@ -34,6 +34,7 @@ import math
 import os
 import shlex
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -476,6 +477,48 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             + (f" {note}" if note else ""))
 
 
+def tail(score, sides):
+    """The normal tail beyond score: the chance of a difference this large (one side: in the
+    stated direction) with no difference at all."""
+    if sides == 2:
+        return math.erfc(abs(score) / math.sqrt(2))
+    return math.erfc(score / math.sqrt(2)) / 2
+
+
+def holm(scores, sides):
+    """Which of a family's comparisons stay resolved once corrected for their number (Holm's
+    step-down): the family as a whole is as unlikely to resolve a difference by chance as one
+    comparison at RESOLVED standard errors. Returns (the indices that stay, the score the
+    largest one needed)."""
+    level = tail(RESOLVED, sides)
+    order = sorted(range(len(scores)), key=lambda k: tail(scores[k], sides))
+    stay = []
+    for rank, k in enumerate(order):
+        if tail(scores[k], sides) > level / (len(scores) - rank):
+            break
+        stay.append(k)
+    needed = statistics.NormalDist().inv_cdf(1 - level / len(scores) / (2 if sides == 2 else 1))
+    return stay, needed
+
+
+def corrected_note(resolved, tested, scores, sides):
+    """What a family of comparisons shows after the correction: ('resolved', text) where some
+    difference stays resolved, else ('not resolved', text); '' text without any at RESOLVED."""
+    if not resolved:
+        return "not resolved", ""
+    stay, needed = holm(scores, sides)
+    largest = max(scores, key=abs) if sides == 2 else max(scores)
+    raw = (f"{resolved} of {tested} exceed{'s' if resolved == 1 else ''} {RESOLVED:g} standard "
+           f"errors ({chance(tested, sides)})")
+    if stay:
+        return "resolved", (f"{len(stay)} of {tested} stay{'s' if len(stay) == 1 else ''} "
+                            f"resolved once corrected for the {tested} comparisons (Holm); "
+                            f"{raw}")
+    return "not resolved", (f"{raw}, but none stays resolved once corrected for the {tested} "
+                            f"comparisons (Holm): the largest, {largest:+.1f} standard errors, "
+                            f"is below the {needed:.2f} the correction asks of it")
+
+
 def chance(tests, sides):
     """How many of `tests` comparisons would resolve by chance alone, with no difference there:
     the verdict rule tests each at RESOLVED standard errors and does not correct for their
@@ -505,7 +548,7 @@ def unchanged_lines(sweep, reference):
     b = sweep.at(**reference)
     pressures = dict.fromkeys(number(r.get("P0")) for r in sweep.rows)    # in plan order
     lower = [{"P0": p} for p in pressures if p is not None and p < reference["P0"]]
-    lines, counts = [], {}
+    lines, counts, scores = [], {}, []
     for values in lower:
         a = sweep.at(**values)
         if a is None or b is None:
@@ -513,6 +556,8 @@ def unchanged_lines(sweep, reference):
         for quantity in ("delta_A_early", "delta_A_late", "delta_phi_plus", "z_half"):
             verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, +1)
             counts[verdict] = counts.get(verdict, 0) + 1
+            if verdict in ("holds", "opposite", "not resolved"):
+                scores.append(score)
             where = (f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} against "
                      f"{mean_se(mb, sb, nb)} at {reference['P0']:g}: ")
             if verdict == "too few runs":
@@ -525,15 +570,17 @@ def unchanged_lines(sweep, reference):
                                      f"the difference {fmt(math.hypot(sa, sb), '.2g')})")
     resolved = counts.get("holds", 0) + counts.get("opposite", 0)
     tested = resolved + counts.get("not resolved", 0)
+    family, note = corrected_note(resolved, tested, scores, 2)
     if not tested:
         return ["- *P0 up to 1e-3 hardly matters*: cannot be told (no two pressures at or "
                 "below 1e-3 with two accepted runs each and spread in a quantity)."]
     left = [f"{counts[v]} {what}" for v, what in (("equal", "without spread"),
                                                  ("too few runs", "with too few runs"))
             if counts.get(v)]
-    if resolved:
-        verdict = (f"**does not hold**: {resolved} of {tested} differences resolved "
-                   f"({chance(tested, 2)})")
+    if family == "resolved":
+        verdict = f"**does not hold**: {note}"
+    elif resolved:
+        verdict = f"**no difference resolved** once corrected: {note}"
     else:
         verdict = (f"**no difference resolved at {RESOLVED:g} standard errors** in {tested} "
                    f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not "
@@ -555,7 +602,7 @@ def optimal_lines(sweeps):
             lines.append(f"  - {one.name}: no base point ({BASE[kind]}).")
             continue
         for quantity in ("delta_A_early", "delta_A_late"):
-            better, ranks, compared = [], [], 0
+            better, ranks, compared, scores = [], [], 0, []
             mb = base.stats(quantity)[0]
             everywhere = one.points()
             for label, e in everywhere:
@@ -563,8 +610,10 @@ def optimal_lines(sweeps):
                 if m is None or mb is None:
                     continue
                 ranks.append(m)
-                verdict = compare(e, base, quantity, -1)[0]
-                compared += e.rows != base.rows and verdict != "too few runs"
+                verdict, *_, score = compare(e, base, quantity, -1)
+                if e.rows != base.rows and verdict != "too few runs":
+                    compared += 1
+                    scores.append(score)
                 if verdict == "holds":
                     better.append(f"{label} ({m:.3g})")
             if mb is None:
@@ -576,15 +625,18 @@ def optimal_lines(sweeps):
                 continue
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
+            family, note = corrected_note(len(better), compared, scores, 1)
+            among = (f"among the {compared} of {len(everywhere) - 1} other points with two or "
+                     f"more accepted runs")
             lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
                          f"rank {rank} of the {len(ranks)} points with an accepted run "
                          f"({len(everywhere)} points in the sweep); "
                          + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
-                            f"among the {compared} of {len(everywhere) - 1} other points with "
-                            f"two or more accepted runs (consistent, not shown)"
-                            if not better else
-                            "**does not hold**: resolved lower at " + ", ".join(better)
-                            + f" ({chance(compared, 1)})"))
+                            f"{among} (consistent, not shown)" if not better else
+                            f"**does not hold**: resolved lower at {', '.join(better)}; {note}"
+                            if family == "resolved" else
+                            f"**no point resolved lower** once corrected, {among}: lower at "
+                            f"{RESOLVED:g} standard errors: {', '.join(better)}; {note}"))
     if not lines:
         return ["- *the default is near-optimal in delta_A*: not run."]
     return ["- *the default is near-optimal in delta_A* (the base point of each sweep against "
@@ -643,7 +695,12 @@ def section(sweeps, doc_dir, command, notes):
              f"direction: *cannot be told*. For the claims that something hardly matters or "
              f"is near-optimal, no resolved difference is consistent with the claim but does "
              f"not show it: those lines say *no difference resolved*, with the standard "
-             f"errors, never *holds*.", ""]
+             f"errors, never *holds*. Such a claim is a family of comparisons (every lower "
+             f"pressure and quantity; every other grid point), and among many, some exceed "
+             f"{RESOLVED:g} standard errors by chance: it **does not hold** only where a "
+             f"difference stays resolved after Holm's correction for the family's size, which "
+             f"makes the whole family as unlikely to resolve one by chance as a single "
+             f"comparison at {RESOLVED:g} standard errors.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
     # (title, figure, point, quantity, sign[, note]) of each direction of the paper
     claims = [
