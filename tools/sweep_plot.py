@@ -141,13 +141,16 @@ def heatmaps(args, rows):
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.y)
         ax.set_title(title)
-        for mark in args.mark:
-            x, y = (float(v) for v in mark.split(","))
+        marked = [tuple(float(v) for v in mark.split(",")) for mark in args.mark]
+        for x, y in marked:
             ax.plot(x, y, "o", mfc="none", mec="red", ms=12, mew=2)
         for (x, y), counts in run_counts(rows, [args.x, args.y]).items():
             if np.isfinite(x) and np.isfinite(y):
+                # in the middle of its tile; below the ring of a marked point
+                ring = any(np.isclose(x, mx) and np.isclose(y, my) for mx, my in marked)
                 ax.annotate(count_label(*counts), (x, y), ha="center", va="center", fontsize=7,
-                            color="black", xytext=(0, -14), textcoords="offset points")
+                            color="black", xytext=(0, -12 if ring else 0),
+                            textcoords="offset points")
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "
                  f"({excluded(rows)})\ngrey: no ok run or a value <= 0; "
                  f"per tile: ok runs / runs (and failed runs)", fontsize=10)

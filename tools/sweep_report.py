@@ -318,8 +318,12 @@ class Sweep:
         if self.kind in HIGHLIGHTED:
             x, y, marks = HIGHLIGHTED[self.kind]
             if {x, y} <= set(self.rows[0]):
+                # only the highlighted points on this grid (a part of a sweep holds some rows)
+                on_grid = [m for m in marks
+                           if any(same_value(r[x], m[0]) for r in self.rows)
+                           and any(same_value(r[y], m[1]) for r in self.rows)]
                 self.plot("heatmaps", ["--x", x, "--y", y] +
-                          [a for m in marks for a in ("--mark", f"{m[0]},{m[1]}")], extra)
+                          [a for m in on_grid for a in ("--mark", f"{m[0]},{m[1]}")], extra)
             # the curves of every point with an accepted run (the reduced grids hold the
             # highlighted points and few others)
             chosen = [p for p in dict.fromkeys(r["point"] for r in self.rows)
