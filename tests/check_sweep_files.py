@@ -3,12 +3,13 @@
 
     check_sweep_files.py
 
-Plans each examples/sweep/*.sweep (but in.sweep, the LAMMPS input) with tools/sweep.py (no LAMMPS run, nothing written), so a
-sweep file broken by a renamed parameter, a moved tissue or a changed protocol fails here and
-not hours into a sweep. For every sweep that other files name as their whole (part_of): the
+Plans each examples/sweep/*.sweep (but in.sweep, the LAMMPS input) with tools/sweep.py (no
+LAMMPS run, nothing written), so that a sweep file broken by a renamed parameter, a moved tissue
+or a changed protocol fails here and not hours into a sweep. For every sweep that other files name as their whole (part_of): the
 parts together plan each of its runs exactly once, so that the parts, run in different sessions
 or on different machines, are the whole grid. Then, in a scratch folder, a made-up part with a
-run the whole lacks (a value off its grid) must be refused by the plan, naming that run.
+run the whole lacks (a value off its grid) must be refused by the plan, naming that run, and so
+must two files that name each other as their whole.
 """
 import collections
 import os
@@ -38,7 +39,7 @@ def check_parts(whole_path, parts, problems):
     want = collections.Counter(sweep.run_key(whole, run) for run in whole_runs)
     have = collections.Counter(sweep.run_key(part, run) for part, runs in parts for run in runs)
     names = ", ".join(os.path.basename(part.path) for part, _ in parts)
-    missing, twice = want - have, +(have - want)
+    missing, twice = want - have, have - want
     if missing:
         problems.append(f"{os.path.basename(whole_path)}: {sum(missing.values())} of its "
                         f"{len(whole_runs)} runs are in none of its parts ({names})")
@@ -72,6 +73,15 @@ def check_foreign_run(problems):
             problems.append(f"the refusal of a foreign run does not name it: {said}")
         else:
             print(f"a foreign run is refused: {said}")
+        # two files each naming the other as its whole: refused, not planned without end
+        with open(whole, "w") as f:
+            f.write(common + "part_of part.sweep\nvary beta 30 100\n")
+        result = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sweep.py"), "plan",
+                                 part, os.path.join(scratch, "dir")],
+                                capture_output=True, text=True)
+        if result.returncode != 1 or "is a part of another sweep itself" not in result.stderr:
+            problems.append(f"a cycle of part_of: exit {result.returncode}, "
+                            f"{result.stderr.strip()[-300:]}")
 
 
 def main():

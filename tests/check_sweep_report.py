@@ -222,6 +222,15 @@ def check_verdict_rules():
            "comparisons at 2 standard errors would resolve 0.091 by chance)" in head,
            f"a resolved lower pressure (+7.3 SE): not 'does not hold' with the chance note: "
            f"{head}")
+    # Holm steps down: of two differences at 2.5 and 2.1 SE the larger needs 2.28 SE (4.55 % /
+    # 2), the smaller then 2 SE (4.55 %): both stay (Bonferroni's 2.28 for both would keep one)
+    stepped = StubSweep(report, "stepped", [
+        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
+        ({"P0": 1e-5}, runs("delta_A_early", [1.0208, 1.0408, 1.0608])),
+        ({"P0": 1e-6}, runs("delta_A_early", [0.9457, 0.9657, 0.9857]))])
+    head = report.unchanged_lines(stepped, {"P0": 1e-3})[0]
+    expect("**does not hold**: 2 of 2 stay resolved once corrected for the 2 comparisons (Holm)"
+           in head, f"differences at +2.5 and -2.1 SE: not both kept by Holm's step-down: {head}")
     # one of two differences at +2.2 SE: resolved at 2 SE alone, but Holm asks the larger of
     # two for a two-sided tail of 4.55 % / 2, i.e. 2.28 SE: not 'does not hold'
     borderline = StubSweep(report, "borderline", [
@@ -231,7 +240,7 @@ def check_verdict_rules():
     head = report.unchanged_lines(borderline, {"P0": 1e-3})[0]
     expect("**no difference resolved** once corrected: 1 of 2 exceeds 2 standard errors" in head
            and "none stays resolved once corrected for the 2 comparisons (Holm): the largest, "
-           "+2.2 standard errors, is below the 2.28 the correction asks of it" in head
+           "2.2 standard errors in size, is below the 2.28 the correction asks of it" in head
            and "does not hold" not in head and "**holds**" not in head,
            f"one of two differences at 2.2 SE: not 'no difference resolved once corrected': "
            f"{head}")
@@ -265,7 +274,7 @@ def check_verdict_rules():
     optimal = [x for x in report.optimal_lines([slightly]) if "delta_A_early" in x]
     expect(len(optimal) == 1 and "**no point resolved lower** once corrected, among the 2 of 2 "
            "other points" in optimal[0] and "lower at 2 standard errors: P0=1e-05 (0.964)"
-           in optimal[0] and "the largest, +2.2 standard errors, is below the 2.28" in optimal[0]
+           in optimal[0] and "the largest, 2.2 standard errors in size, is below the 2.28" in optimal[0]
            and "does not hold" not in optimal[0],
            f"near-optimal with a point lower by 2.2 SE of two: {optimal}")
 
@@ -406,6 +415,53 @@ def check_archives(scratch, fig6, from_folders_of, out):
            f"'no': {result.stderr}")
 
 
+def check_parts(scratch, out):
+    """A sweep run in parts: a part given alone draws the heatmaps of the whole grid, its runs
+    at their points and the whole's other runs unfinished, and the section says how much of
+    the whole is done; from the part's archive the heatmaps are kept, not drawn again; the
+    whole given with its part is refused (their figures would bear one name)."""
+    whole = os.path.join(scratch, "fig5_w.sweep")
+    part = os.path.join(scratch, "fig5_wa.sweep")
+    common = (f"parameters {os.path.join(ROOT, 'potentials', 'fig5.mesophyll')}\nset base\n"
+              f"seeds 1 2 3\ntissue {TISSUE}\nfixed steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11\n")
+    with open(whole, "w") as f:
+        f.write("name fig5_w\npoint beta=30 eps_b=0.4\npoint beta=100 eps_b=0.01\n" + common)
+    with open(part, "w") as f:
+        f.write("name fig5_wa\npart_of fig5_w.sweep\npoint beta=30 eps_b=0.4\n" + common)
+    folder = os.path.join(scratch, "fig5_wa")
+    subprocess.run([sys.executable, SWEEP, "plan", part, folder], check=True,
+                   stdout=subprocess.DEVNULL)
+    fake_results(folder)
+    doc = os.path.join(scratch, "doc", "validation.md")
+    result, text = report(["--fig5", folder], doc, out)
+    png = os.path.join(out, "fig5_w_heatmaps.png")
+    expect(result.returncode == 0 and os.path.exists(png),
+           f"a part alone: no heatmaps of its whole: {result.stderr}")
+    expect("**fig5_w** (fig5, the whole grid of" in text and
+           "3 of 6 runs done, from its part fig5_wa (3 ok, 3 unfinished)" in text and
+           "![fig5_w_heatmaps.png]" in text,
+           "the section does not give the whole grid's progress and heatmaps")
+    drawn = list(csv.DictReader(open(os.path.join(out, "fig5_w_heatmaps.csv"))))
+    m, _ = mean_se(DPHI["beta=30 eps_b=0.4"])
+    at = {(r["beta"], r["eps_b"]): r for r in drawn if r["quantity"] == "delta_phi_plus"}
+    expect(abs(float(at["30.0", "0.4"]["mean"]) - m) < 1e-12 and
+           at["30.0", "0.4"]["runs"] == "3" and ("100.0", "0.01") not in at,
+           f"the whole's heatmap: not the part's runs at beta 30 and none at beta 100: {at}")
+    stamp = os.path.getmtime(png)
+    result, text = report(["--fig5", os.path.join(out, "fig5_wa_summary.csv")], doc, out,
+                          scratch)
+    expect(result.returncode == 0 and os.path.getmtime(png) == stamp and
+           "![fig5_w_heatmaps.png]" in text,
+           f"from the part's archive: the whole's heatmaps drawn again or not linked: "
+           f"{result.stderr}")
+    whole_folder = os.path.join(scratch, "fig5_w")
+    subprocess.run([sys.executable, SWEEP, "plan", whole, whole_folder], check=True,
+                   stdout=subprocess.DEVNULL)
+    result, _ = report(["--fig5", folder, whole_folder], doc, out)
+    expect(result.returncode != 0 and "each sweep once" in result.stderr,
+           f"the whole given with its part: exit {result.returncode}, {result.stderr}")
+
+
 def main():
     check_verdict_rules()
     os.environ["MESOPHYLL_MISSING_EXIT"] = "77"    # sweep_plot.py without matplotlib: skip
@@ -518,6 +574,7 @@ def main():
                f"unconverged`" in text, "--accept unconverged is missing from the command given")
         check_two_of_a_figure(scratch, fig6, fig5, out)
         check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
+        check_parts(scratch, out)
         # bad input: no folder, a folder without runs, a file that is no archive, a missing one
         not_archive = os.path.join(scratch, "fig6_t.sweep")
         for args in ([], ["--fig6", scratch], ["--fig6", not_archive],

@@ -279,7 +279,8 @@ def planned_runs(sweep_file):
 
 
 def run_key(sweep, run):
-    """What makes two planned runs the same run, whichever sweep file plans them."""
+    """What makes two planned runs the same run, whichever sweep file plans them (values as
+    written: a part must write 0.01 where its whole does, not 1e-2)."""
     return (sweep.protocol, sweep.parameters, run["tissue"],
             tuple(sorted(run["values"].items())))
 
@@ -290,9 +291,9 @@ def check_part(part, runs):
     run that the whole does not have."""
     if os.path.abspath(part.part_of) == os.path.abspath(part.path):
         sys.exit(f"{part.path}: a sweep cannot be a part of itself (part_of)")
-    whole, _, whole_runs = planned_runs(part.part_of)
-    if whole.part_of:
+    if SweepFile(part.part_of).part_of:    # before planning it: a cycle would not end
         sys.exit(f"{part.path}: its whole {part.part_of} is a part of another sweep itself")
+    whole, _, whole_runs = planned_runs(part.part_of)
     keys = {run_key(whole, run) for run in whole_runs}
     for run in runs:
         if run_key(part, run) not in keys:

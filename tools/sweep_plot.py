@@ -148,7 +148,8 @@ def heatmaps(args, rows):
             if np.isfinite(x) and np.isfinite(y):
                 # in the middle of its tile; below the ring of a marked point
                 ring = any(np.isclose(x, mx) and np.isclose(y, my) for mx, my in marked)
-                ax.annotate(count_label(*counts), (x, y), ha="center", va="center", fontsize=7,
+                ax.annotate(count_label(*counts), (x, y), ha="center", va="center",
+                            fontsize=7 if len(xs) <= 7 else 6,
                             color="black", xytext=(0, -12 if ring else 0),
                             textcoords="offset points")
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "

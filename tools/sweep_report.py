@@ -37,6 +37,7 @@ import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -235,8 +236,9 @@ class Sweep:
         extra = [a for k in self.accept if k != "ok" for a in ("--accept", k)]
         run_tool([SWEEP, "summary", folder] + extra)
         self.rows = list(csv.DictReader(open(os.path.join(folder, "summary.csv"))))
-        self.name, planned_file, self.protocol = sweep.planned(folder)
-        self.sweep_file = shown(planned_file)
+        self.name, self.sweep_path, self.protocol = sweep.planned(folder)
+        self.sweep_file = shown(self.sweep_path)
+        self.part_of = sweep.SweepFile(self.sweep_path).part_of
         self.withdrawn_list = withdrawn_runs(folder)
         self.draw(extra)
 
@@ -249,8 +251,8 @@ class Sweep:
             sys.exit(f"sweep_report: {path} is the archive of sweep {self.name}, but its sweep "
                      f"file {sweep_file} does not exist")
         definition, _, planned = sweep.planned_runs(sweep_file)
-        self.sweep_file = shown(sweep_file)
-        self.protocol = definition.protocol
+        self.sweep_path, self.sweep_file = sweep_file, shown(sweep_file)
+        self.protocol, self.part_of = definition.protocol, definition.part_of
         self.records = {}
         for run in planned:
             self.records[run["id"]] = {"variables": dict(
@@ -319,9 +321,8 @@ class Sweep:
             x, y, marks = HIGHLIGHTED[self.kind]
             if {x, y} <= set(self.rows[0]):
                 # only the highlighted points on this grid (a part of a sweep holds some rows)
-                on_grid = [m for m in marks
-                           if any(same_value(r[x], m[0]) for r in self.rows)
-                           and any(same_value(r[y], m[1]) for r in self.rows)]
+                on_grid = [m for m in marks if any(same_value(r[x], m[0]) and
+                                                   same_value(r[y], m[1]) for r in self.rows)]
                 self.plot("heatmaps", ["--x", x, "--y", y] +
                           [a for m in on_grid for a in ("--mark", f"{m[0]},{m[1]}")], extra)
             # the curves of every point with an accepted run (the reduced grids hold the
@@ -418,6 +419,75 @@ class Sweep:
                 f"tile of the heatmap.")
 
 
+class Whole:
+    """A sweep run in parts (sweep files with part_of): its runs in the order of its own plan,
+    each with the row of the part that ran it, or unfinished where no part given has; and the
+    heatmaps of the whole grid. The parts keep their own verdicts, tables and figures. The
+    heatmaps are drawn where a part comes from its folder (new runs); from archives alone the
+    ones drawn then are kept (nothing is written beside the archives)."""
+
+    def __init__(self, kind, path, parts, out, accept):
+        self.kind, self.parts, self.figures = kind, parts, []
+        definition, _, planned = sweep.planned_runs(path)
+        self.name, self.sweep_file = definition.name, shown(path)
+        ran = {}
+        for part in parts:
+            part_definition, _, part_runs = sweep.planned_runs(part.sweep_path)
+            key = {run["id"]: sweep.run_key(part_definition, run) for run in part_runs}
+            for row in part.rows:
+                ran[key[row["run"]]] = row
+        self.rows = []
+        for run in planned:
+            row = dict(ran.get(sweep.run_key(definition, run)) or
+                       {"status": "unfinished", "steps": "0"})
+            row.update(run["point_values"], run=run["id"], point=run["point"], seed=run["seed"],
+                       tissue=sweep.path_from(ROOT, run["tissue"]), N=run["values"]["N"],
+                       steps_planned=run["values"].get("steps", ""))
+            self.rows.append(row)
+        png = os.path.join(out, f"{self.name}_heatmaps.png")
+        if any(not part.archived for part in parts) and self.kind in HIGHLIGHTED:
+            self.draw(png, accept)
+        if os.path.exists(png):
+            self.figures.append(png)
+
+    def draw(self, png, accept):
+        x, y, marks = HIGHLIGHTED[self.kind]
+        columns = list(dict.fromkeys(k for row in self.rows for k in row))
+        with tempfile.TemporaryDirectory(prefix="sweep_whole_") as scratch:
+            folder = os.path.join(scratch, self.name)    # the figure's title names the folder
+            os.makedirs(folder)
+            with open(os.path.join(folder, "summary.csv"), "w", newline="") as f:
+                out = csv.DictWriter(f, columns, restval="")
+                out.writeheader()
+                out.writerows(self.rows)
+            run_tool([PLOT, "heatmaps", folder, "-o", png, "--x", x, "--y", y]
+                     + [a for m in marks for a in ("--mark", f"{m[0]},{m[1]}")]
+                     + [a for k in sorted(accept) if k != "ok" for a in ("--accept", k)])
+
+    def lines(self, rel):
+        counts = Ensemble(self.rows, {"ok"}).status_text()
+        done = sum(r["status"] != "unfinished" for r in self.rows)
+        names = listed([part.name for part in self.parts])
+        return ([f"**{self.name}** ({self.kind}, the whole grid of `{self.sweep_file}`, run in "
+                 f"parts): {done} of {len(self.rows)} runs done, from its part"
+                 f"{'s' if len(self.parts) > 1 else ''} {names} ({counts}). Each part plans "
+                 f"only runs of the whole (`tools/sweep.py plan` checks it); each part's verdicts "
+                 f"(above), table, cost and figures (below) are its own. The heatmaps of the "
+                 f"whole grid:", ""]
+                + [f"![{os.path.basename(p)}]({rel(p)})" for p in self.figures]
+                + (["No figure: no part of it was reported from its sweep folder."]
+                   if not self.figures else []) + [""])
+
+
+def wholes_of(sweeps, out, accept):
+    """The sweeps that the given ones are parts of, each a Whole of the parts given."""
+    parts = {}
+    for one in sweeps:
+        if one.part_of:
+            parts.setdefault((one.kind, one.part_of), []).append(one)
+    return [Whole(kind, path, group, out, accept) for (kind, path), group in parts.items()]
+
+
 def step_cap_note(rows, caps, phi_stop):
     """The borrowed runs are the runs this sweep would have made when both sweeps cap growth at
     the same number of steps, or when every borrowed run stopped at phi_stop before the
@@ -511,16 +581,16 @@ def corrected_note(resolved, tested, scores, sides):
     if not resolved:
         return "not resolved", ""
     stay, needed = holm(scores, sides)
-    largest = max(scores, key=abs) if sides == 2 else max(scores)
+    largest = max(abs(x) for x in scores) if sides == 2 else max(scores)
+    family = f"{tested} comparison{'s' if tested != 1 else ''}"
     raw = (f"{resolved} of {tested} exceed{'s' if resolved == 1 else ''} {RESOLVED:g} standard "
            f"errors ({chance(tested, sides)})")
     if stay:
         return "resolved", (f"{len(stay)} of {tested} stay{'s' if len(stay) == 1 else ''} "
-                            f"resolved once corrected for the {tested} comparisons (Holm); "
-                            f"{raw}")
-    return "not resolved", (f"{raw}, but none stays resolved once corrected for the {tested} "
-                            f"comparisons (Holm): the largest, {largest:+.1f} standard errors, "
-                            f"is below the {needed:.2f} the correction asks of it")
+                            f"resolved once corrected for the {family} (Holm); {raw}")
+    return "not resolved", (f"{raw}, but none stays resolved once corrected for the {family} "
+                            f"(Holm): the largest, {largest:.1f} standard errors in size, is "
+                            f"below the {needed:.2f} the correction asks of it")
 
 
 def chance(tests, sides):
@@ -606,7 +676,7 @@ def optimal_lines(sweeps):
             lines.append(f"  - {one.name}: no base point ({BASE[kind]}).")
             continue
         for quantity in ("delta_A_early", "delta_A_late"):
-            better, ranks, compared, scores = [], [], 0, []
+            better, ranks, compared, scores, labels = [], [], 0, [], []
             mb = base.stats(quantity)[0]
             everywhere = one.points()
             for label, e in everywhere:
@@ -617,7 +687,9 @@ def optimal_lines(sweeps):
                 verdict, *_, score = compare(e, base, quantity, -1)
                 if e.rows != base.rows and verdict != "too few runs":
                     compared += 1
-                    scores.append(score)
+                if verdict in ("holds", "opposite", "not resolved") and e.rows != base.rows:
+                    scores.append(score)    # the family: comparisons with spread
+                    labels.append(f"{label} ({m:.3g})")
                 if verdict == "holds":
                     better.append(f"{label} ({m:.3g})")
             if mb is None:
@@ -629,7 +701,8 @@ def optimal_lines(sweeps):
                 continue
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
-            family, note = corrected_note(len(better), compared, scores, 1)
+            family, note = corrected_note(len(better), len(scores), scores, 1)
+            stay = [labels[k] for k in sorted(holm(scores, 1)[0])] if scores else []
             among = (f"among the {compared} of {len(everywhere) - 1} other points with two or "
                      f"more accepted runs")
             lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
@@ -637,7 +710,7 @@ def optimal_lines(sweeps):
                          f"({len(everywhere)} points in the sweep); "
                          + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
                             f"{among} (consistent, not shown)" if not better else
-                            f"**does not hold**: resolved lower at {', '.join(better)}; {note}"
+                            f"**does not hold**: resolved lower at {', '.join(stay)}; {note}"
                             if family == "resolved" else
                             f"**no point resolved lower** once corrected, {among}: lower at "
                             f"{RESOLVED:g} standard errors: {', '.join(better)}; {note}"))
@@ -662,7 +735,7 @@ def points_table(sweep):
     return lines
 
 
-def section(sweeps, doc_dir, command, notes):
+def section(sweeps, doc_dir, command, notes, wholes=()):
     rel = lambda p: os.path.relpath(p, doc_dir)  # noqa: E731
     archived = [s.name for s in sweeps if s.archived]
     files = listed([f"`{s.sweep_file}`" for s in sweeps])
@@ -731,8 +804,12 @@ def section(sweeps, doc_dir, command, notes):
                                         *note))
     lines += optimal_lines(sweeps)
     lines += ["", "### Per grid point, and what each figure cost", ""]
+    whole_of = {id(part): whole for whole in wholes for part in whole.parts}
     for one in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
         kind = one.kind
+        whole = whole_of.get(id(one))
+        if whole and whole.parts[0] is one:    # the whole grid before its first part
+            lines += whole.lines(rel)
         runs = len(one.rows)
         done = sum(r["status"] != "unfinished" for r in one.rows)
         rate = (f"; {one.timed / (one.wall_s / 3600):.0f} runs per partition-hour"
@@ -810,9 +887,14 @@ def main():
                     f"sweep first) nor an archived <name>_summary.csv")
     names = [archive_name(s) if os.path.isfile(s) else sweep.planned(s)[0]
              for _, s in given]
-    twice = sorted({n for n in names if names.count(n) > 1})
+    files = [os.path.join(args.sweeps, f"{n}.sweep") if os.path.isfile(source)
+             else sweep.planned(source)[1] for n, (_, source) in zip(names, given)]
+    whole_files = {sweep.SweepFile(f).part_of for f in files if os.path.isfile(f)} - {None}
+    twice = sorted({n for n in names if names.count(n) > 1} |
+                   ({sweep.SweepFile(w).name for w in whole_files} & set(names)))
     if twice:    # their CSVs and figures in OUT would overwrite each other
-        p.error(f"two sweeps named {', '.join(twice)}: each sweep once")
+        p.error(f"two sweeps named {', '.join(twice)} (or a sweep given with its parts, whose "
+                f"whole grid's heatmaps bear its name): each sweep once")
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
     sweeps = [Sweep(kind, source, args.out, set(args.accept), args.sweeps)
@@ -827,8 +909,9 @@ def main():
     if os.path.abspath(args.sweeps) != os.path.abspath(SWEEP_FILES):
         words += ["--sweeps", shown(args.sweeps)]
     command = "tools/sweep_report.py " + " ".join(shlex.quote(w) for w in words)
+    wholes = wholes_of(sweeps, args.out, set(args.accept))
     write_section(args.doc, section(sweeps, os.path.dirname(os.path.abspath(args.doc)),
-                                    command, [n for n in notes if n]))
+                                    command, [n for n in notes if n], wholes))
     print(f"wrote {args.doc} (section {SECTION_BEGIN}) and {len(sweeps)} sweeps' CSVs and PNGs "
           f"in {args.out} ({time.time() - started:.0f} s)")
 
