@@ -575,6 +575,16 @@ def main():
         check_two_of_a_figure(scratch, fig6, fig5, out)
         check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
         check_parts(scratch, out)
+        # a Fig 5 sweep that leaves P0 to its parameter set (1e-7) and lacks its base borrows
+        # fig6_t's 1e-7 runs: the borrowing reads the set's P0 (a KeyError on P0 before)
+        set_p0 = plan(scratch, "fig5_set_p0", "fig5.mesophyll", ["beta=30 eps_b=0.4"],
+                      "steps 3 phi_stop 0.45 ftol 1e-11")
+        fake_results(set_p0)
+        result, text = report(["--fig6", fig6, "--fig5", set_p0], doc, out)
+        expect(result.returncode == 0 and "fig5_set_p0's base point {'beta': 100, 'eps_b': 0.4} "
+               "is fig6_t's P0 = 1e-07 point" in text,
+               f"a sweep with P0 from its set: exit {result.returncode}, "
+               f"{result.stderr.strip()[-300:]}")
         # bad input: no folder, a folder without runs, a file that is no archive, a missing one
         not_archive = os.path.join(scratch, "fig6_t.sweep")
         for args in ([], ["--fig6", scratch], ["--fig6", not_archive],

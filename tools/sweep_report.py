@@ -386,17 +386,20 @@ class Sweep:
         mine, theirs = self.run_record(self.rows[0]), fig6.run_record(fig6.rows[0])
         sets = [sweep.parameter_sets(s.parameter_file(r))[r["variables"]["set"]]
                 for s, r in ((self, mine), (fig6, theirs))]
+        # the run's pressure: its own variable, else its parameter set's (a sweep that leaves P0
+        # to the set, as fig5_part1.sweep)
+        p0 = float(mine["variables"].get("P0", sets[0].get("P0", "nan")))
         for s in sets:
             s.pop("P0", None)
         if sets[0] != sets[1]:
             return (f"{self.name} has no base point, and the base set of its parameter file "
                     f"differs from {fig6.name}'s beyond P0: none borrowed.")
-        p0 = float(mine["variables"]["P0"])
         rows = [r for r in fig6.rows if same_value(r.get("P0"), p0)]
         if not rows:
             return f"{self.name} has no base point, and {fig6.name} has no P0 = {p0:g}."
         lender = fig6.run_record(rows[0])
-        settings = [self.settings(mine), fig6.settings(lender)]
+        # P0 agrees by the choice of rows (its text may differ: 1e-7, 1.0e-7)
+        settings = [dict(self.settings(mine), P0=p0), dict(fig6.settings(lender), P0=p0)]
         differ = [name for name in BORROW_RUN_VARIABLES
                   if settings[0].get(name) != settings[1].get(name)]
         seeds_tissues = lambda rs: sorted((r["seed"], r["tissue"]) for r in rs)  # noqa: E731
