@@ -50,6 +50,13 @@ def check_parts(whole_path, parts, problems):
           f"{sum(have.values())}")
 
 
+def plan_in(scratch, sweep_file):
+    """tools/sweep.py plan of sweep_file into a folder of scratch, its output captured."""
+    return subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sweep.py"), "plan",
+                           sweep_file, os.path.join(scratch, "dir")],
+                          capture_output=True, text=True)
+
+
 def check_foreign_run(problems):
     """A part with a run off the whole's grid is refused, and the message names the run."""
     with tempfile.TemporaryDirectory(prefix="sweep_files_") as scratch:
@@ -63,9 +70,7 @@ def check_foreign_run(problems):
             f.write(common + "vary beta 30 100\n")
         with open(part, "w") as f:
             f.write(common + "part_of whole.sweep\nvary beta 100 300\n")
-        result = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sweep.py"), "plan",
-                                 part, os.path.join(scratch, "dir")],
-                                capture_output=True, text=True)
+        result = plan_in(scratch, part)
         said = result.stderr.strip()
         if result.returncode == 0:
             problems.append("a part with a run the whole does not plan (beta 300) was planned")
@@ -76,9 +81,7 @@ def check_foreign_run(problems):
         # two files each naming the other as its whole: refused, not planned without end
         with open(whole, "w") as f:
             f.write(common + "part_of part.sweep\nvary beta 30 100\n")
-        result = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sweep.py"), "plan",
-                                 part, os.path.join(scratch, "dir")],
-                                capture_output=True, text=True)
+        result = plan_in(scratch, part)
         if result.returncode != 1 or "is a part of another sweep itself" not in result.stderr:
             problems.append(f"a cycle of part_of: exit {result.returncode}, "
                             f"{result.stderr.strip()[-300:]}")

@@ -211,6 +211,15 @@ def archive_name(path):
     return base[:-len("_summary.csv")] if base.endswith("_summary.csv") else None
 
 
+def heatmap_axes(kind, rows):
+    """sweep_plot.py heatmaps' axes of the figure and its highlighted points, those on the grid
+    of rows only (a part of a sweep holds some rows)."""
+    x, y, marks = HIGHLIGHTED[kind]
+    on_grid = [m for m in marks
+               if any(same_value(r[x], m[0]) and same_value(r[y], m[1]) for r in rows)]
+    return ["--x", x, "--y", y] + [a for m in on_grid for a in ("--mark", f"{m[0]},{m[1]}")]
+
+
 class Sweep:
     """A summarized sweep and the figures drawn from it: from its folder, or from the CSVs a
     report archived from that folder (OUT/<name>_summary.csv, _points.csv, _withdrawn.csv and
@@ -318,13 +327,8 @@ class Sweep:
         if not any(r["status"] in self.accept for r in self.rows):
             return    # nothing to draw: the section says so
         if self.kind in HIGHLIGHTED:
-            x, y, marks = HIGHLIGHTED[self.kind]
-            if {x, y} <= set(self.rows[0]):
-                # only the highlighted points on this grid (a part of a sweep holds some rows)
-                on_grid = [m for m in marks if any(same_value(r[x], m[0]) and
-                                                   same_value(r[y], m[1]) for r in self.rows)]
-                self.plot("heatmaps", ["--x", x, "--y", y] +
-                          [a for m in on_grid for a in ("--mark", f"{m[0]},{m[1]}")], extra)
+            if set(HIGHLIGHTED[self.kind][:2]) <= set(self.rows[0]):
+                self.plot("heatmaps", heatmap_axes(self.kind, self.rows), extra)
             # the curves of every point with an accepted run (the reduced grids hold the
             # highlighted points and few others)
             chosen = [p for p in dict.fromkeys(r["point"] for r in self.rows)
@@ -454,7 +458,6 @@ class Whole:
             self.figures.append(png)
 
     def draw(self, png, accept):
-        x, y, marks = HIGHLIGHTED[self.kind]
         columns = list(dict.fromkeys(k for row in self.rows for k in row))
         with tempfile.TemporaryDirectory(prefix="sweep_whole_") as scratch:
             folder = os.path.join(scratch, self.name)    # the figure's title names the folder
@@ -463,8 +466,7 @@ class Whole:
                 out = csv.DictWriter(f, columns, restval="")
                 out.writeheader()
                 out.writerows(self.rows)
-            run_tool([PLOT, "heatmaps", folder, "-o", png, "--x", x, "--y", y]
-                     + [a for m in marks for a in ("--mark", f"{m[0]},{m[1]}")]
+            run_tool([PLOT, "heatmaps", folder, "-o", png] + heatmap_axes(self.kind, self.rows)
                      + [a for k in sorted(accept) if k != "ok" for a in ("--accept", k)])
 
     def lines(self, rel):
@@ -578,22 +580,25 @@ def holm(scores, sides):
     return stay, needed
 
 
-def corrected_note(resolved, tested, scores, sides):
-    """What a family of comparisons shows after the correction: ('resolved', text) where some
-    difference stays resolved, else ('not resolved', text); '' text without any at RESOLVED."""
+def corrected_note(scores, sides):
+    """What a family of comparisons (their scores, in standard errors) shows after the
+    correction: (the indices of those that stay resolved, a sentence saying so, or how far the
+    largest fell short); ([], '') where none exceeds RESOLVED at all."""
+    tested = len(scores)
+    resolved = sum((abs(x) if sides == 2 else x) > RESOLVED for x in scores)
     if not resolved:
-        return "not resolved", ""
+        return [], ""
     stay, needed = holm(scores, sides)
     largest = max(abs(x) for x in scores) if sides == 2 else max(scores)
     family = f"{tested} comparison{'s' if tested != 1 else ''}"
     raw = (f"{resolved} of {tested} exceed{'s' if resolved == 1 else ''} {RESOLVED:g} standard "
            f"errors ({chance(tested, sides)})")
     if stay:
-        return "resolved", (f"{len(stay)} of {tested} stay{'s' if len(stay) == 1 else ''} "
-                            f"resolved once corrected for the {family} (Holm); {raw}")
-    return "not resolved", (f"{raw}, but none stays resolved once corrected for the {family} "
-                            f"(Holm): the largest, {largest:.1f} standard errors in size, is "
-                            f"below the {needed:.2f} the correction asks of it")
+        return stay, (f"{len(stay)} of {tested} stay{'s' if len(stay) == 1 else ''} resolved "
+                      f"once corrected for the {family} (Holm); {raw}")
+    return stay, (f"{raw}, but none stays resolved once corrected for the {family} (Holm): the "
+                  f"largest, {largest:.1f} standard errors in size, is below the {needed:.2f} "
+                  f"the correction asks of it")
 
 
 def chance(tests, sides):
@@ -647,14 +652,14 @@ def unchanged_lines(sweep, reference):
                                      f"the difference {fmt(math.hypot(sa, sb), '.2g')})")
     resolved = counts.get("holds", 0) + counts.get("opposite", 0)
     tested = resolved + counts.get("not resolved", 0)
-    family, note = corrected_note(resolved, tested, scores, 2)
+    stay, note = corrected_note(scores, 2)
     if not tested:
         return ["- *P0 up to 1e-3 hardly matters*: cannot be told (no two pressures at or "
                 "below 1e-3 with two accepted runs each and spread in a quantity)."]
     left = [f"{counts[v]} {what}" for v, what in (("equal", "without spread"),
                                                  ("too few runs", "with too few runs"))
             if counts.get(v)]
-    if family == "resolved":
+    if stay:
         verdict = f"**does not hold**: {note}"
     elif resolved:
         verdict = f"**no difference resolved** once corrected: {note}"
@@ -704,8 +709,7 @@ def optimal_lines(sweeps):
                 continue
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
-            family, note = corrected_note(len(better), len(scores), scores, 1)
-            stay = [labels[k] for k in sorted(holm(scores, 1)[0])] if scores else []
+            stay, note = corrected_note(scores, 1)
             among = (f"among the {compared} of {len(everywhere) - 1} other points with two or "
                      f"more accepted runs")
             lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
@@ -713,8 +717,9 @@ def optimal_lines(sweeps):
                          f"({len(everywhere)} points in the sweep); "
                          + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
                             f"{among} (consistent, not shown)" if not better else
-                            f"**does not hold**: resolved lower at {', '.join(stay)}; {note}"
-                            if family == "resolved" else
+                            f"**does not hold**: resolved lower at "
+                            f"{', '.join(labels[k] for k in sorted(stay))}; {note}"
+                            if stay else
                             f"**no point resolved lower** once corrected, {among}: lower at "
                             f"{RESOLVED:g} standard errors: {', '.join(better)}; {note}"))
     if not lines:
