@@ -59,7 +59,8 @@ problems = []
 DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.06, 10.0],
         "P0=1e-5": [0.0015, 0.0025, 0.0030], "P0=1e-7": [0.0012, 0.0021, 0.0033],
         "beta=30 eps_b=0.4": [0.0015, 0.0025, 0.0030],
-        "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002]}
+        "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002],
+        "beta=100 eps_b=0.4": [0.0010, 0.0012, 0.0014]}
 FAILED = ("P0=5e-2", "3")
 FIG6_POINTS = ["P0=1e-3 ftol=1e-10", "P0=5e-2 ftol=1e-10", "P0=1e-5 ftol=1e-11",
                "P0=1e-7 ftol=1e-11"]
@@ -419,28 +420,45 @@ def check_parts(scratch, out):
     """A sweep run in parts: a part given alone draws the heatmaps of the whole grid, its runs
     at their points and the whole's other runs unfinished, and the section says how much of
     the whole is done; from the part's archive the heatmaps are kept, not drawn again; the
-    whole given with its part is refused (their figures would bear one name)."""
+    whole given with its part is refused (their figures would bear one name). The verdicts
+    are the whole's: a point of one part against the base point of another."""
     whole = os.path.join(scratch, "fig5_w.sweep")
-    part = os.path.join(scratch, "fig5_wa.sweep")
     common = (f"parameters {os.path.join(ROOT, 'potentials', 'fig5.mesophyll')}\nset base\n"
               f"seeds 1 2 3\ntissue {TISSUE}\nfixed steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11\n")
     with open(whole, "w") as f:
-        f.write("name fig5_w\npoint beta=30 eps_b=0.4\npoint beta=100 eps_b=0.01\n" + common)
-    with open(part, "w") as f:
-        f.write("name fig5_wa\npart_of fig5_w.sweep\npoint beta=30 eps_b=0.4\n" + common)
-    folder = os.path.join(scratch, "fig5_wa")
-    subprocess.run([sys.executable, SWEEP, "plan", part, folder], check=True,
-                   stdout=subprocess.DEVNULL)
-    fake_results(folder)
+        f.write("name fig5_w\npoint beta=30 eps_b=0.4\npoint beta=100 eps_b=0.01\n"
+                "point beta=100 eps_b=0.4\n" + common)
+    folders = []
+    for name, point in (("fig5_wa", "beta=30 eps_b=0.4"), ("fig5_wb", "beta=100 eps_b=0.4")):
+        part = os.path.join(scratch, f"{name}.sweep")
+        with open(part, "w") as f:
+            f.write(f"name {name}\npart_of fig5_w.sweep\npoint {point}\n" + common)
+        folders.append(os.path.join(scratch, name))
+        subprocess.run([sys.executable, SWEEP, "plan", part, folders[-1]], check=True,
+                       stdout=subprocess.DEVNULL)
+        fake_results(folders[-1])
+    folder = folders[0]
     doc = os.path.join(scratch, "doc", "validation.md")
     result, text = report(["--fig5", folder], doc, out)
     png = os.path.join(out, "fig5_w_heatmaps.png")
     expect(result.returncode == 0 and os.path.exists(png),
            f"a part alone: no heatmaps of its whole: {result.stderr}")
     expect("**fig5_w** (fig5, the whole grid of" in text and
-           "3 of 6 runs done, from its part fig5_wa (3 ok, 3 unfinished)" in text and
+           "3 of 9 runs done, from its part fig5_wa (3 ok, 6 unfinished)" in text and
            "![fig5_w_heatmaps.png]" in text,
            "the section does not give the whole grid's progress and heatmaps")
+    alone = line_of(text, "low beta compacts")
+    expect("(delta_phi_plus; fig5_w)" in alone and "[3 unfinished]" in alone and
+           "fewer than two accepted runs" in alone,
+           f"a part without the base: its whole's low-beta line does not say that the base is "
+           f"unfinished: {alone}")
+    # the base point in the second part: the first part's point is judged against it
+    result, both = report(["--fig5"] + folders, doc, out)
+    expect(result.returncode == 0, f"two parts: exit {result.returncode}, {result.stderr}")
+    check_claim(both, "low beta compacts", "beta=30 eps_b=0.4", "beta=100 eps_b=0.4",
+                "**holds**", "(delta_phi_plus; fig5_w)")
+    expect("6 of 9 runs done, from its parts fig5_wa and fig5_wb" in both,
+           "two parts: the whole's progress is not both parts'")
     drawn = list(csv.DictReader(open(os.path.join(out, "fig5_w_heatmaps.csv"))))
     m, _ = mean_se(DPHI["beta=30 eps_b=0.4"])
     at = {(r["beta"], r["eps_b"]): r for r in drawn if r["quantity"] == "delta_phi_plus"}

@@ -9,7 +9,8 @@ doc/validation.md with a verdict on each direction the paper states.
 Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.sweep, run (or
 partly run) with examples/sweep/in.sweep. A figure may have several sweeps (e.g. fig6_coarse
 and fig6_N32, the same pressures at 16 and 32 cells): each gets the figure's directions, and
-the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. For each:
+the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. The parts of
+a sweep run in parts (part_of) are judged together as their whole grid. For each:
 `tools/sweep.py summary DIR`, its summary.csv and points.csv copied to OUT/<sweep>_summary.csv
 and _points.csv, its withdrawn runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv,
 the figures of tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's
@@ -429,12 +430,14 @@ class Sweep:
 class Whole:
     """A sweep run in parts (sweep files with part_of): its runs in the order of its own plan,
     each with the row of the part that ran it, or unfinished where no part given has; and the
-    heatmaps of the whole grid. The parts keep their own verdicts, tables and figures. The
-    heatmaps are drawn where a part comes from its folder (new runs); from archives alone the
-    ones drawn then are kept (nothing is written beside the archives)."""
+    heatmaps of the whole grid. The verdicts are the whole's (a part's runs are the whole's,
+    so points of two parts compare as points of one sweep); the parts keep their own tables
+    and figures, and borrow no base point. The heatmaps are drawn where a part comes from its
+    folder (new runs); from archives alone the ones drawn then are kept (nothing is written
+    beside the archives)."""
 
     def __init__(self, kind, path, parts, out, accept):
-        self.kind, self.parts, self.figures = kind, parts, []
+        self.kind, self.parts, self.figures, self.accept = kind, parts, [], accept
         definition, _, planned = sweep.planned_runs(path)
         self.name, self.sweep_file = definition.name, shown(path)
         ran = {}
@@ -457,6 +460,15 @@ class Whole:
         if os.path.exists(png):
             self.figures.append(png)
 
+    def at(self, **values):
+        return ensemble_at(self.rows, values, self.accept)
+
+    def points(self):
+        """[(label, Ensemble)] in the order of the whole's plan, unfinished points included."""
+        labels = list(dict.fromkeys(r["point"] for r in self.rows))
+        return [(p, Ensemble([r for r in self.rows if r["point"] == p], self.accept))
+                for p in labels]
+
     def draw(self, png, accept):
         columns = list(dict.fromkeys(k for row in self.rows for k in row))
         with tempfile.TemporaryDirectory(prefix="sweep_whole_") as scratch:
@@ -476,9 +488,10 @@ class Whole:
         return ([f"**{self.name}** ({self.kind}, the whole grid of `{self.sweep_file}`, run in "
                  f"parts): {done} of {len(self.rows)} runs done, from its part"
                  f"{'s' if len(self.parts) > 1 else ''} {names} ({counts}). Each part plans "
-                 f"only runs of the whole (`tools/sweep.py plan` checks it); each part's verdicts "
-                 f"(above), table, cost and figures (below) are its own. The heatmaps of the "
-                 f"whole grid:", ""]
+                 f"only runs of the whole, the same in every variable (`tools/sweep.py plan` "
+                 f"checks it), so the verdicts above compare points across parts as the "
+                 f"whole's; each part's table, cost and figures (below) are its own. The "
+                 f"heatmaps of the whole grid:", ""]
                 + [f"![{os.path.basename(p)}]({rel(p)})" for p in self.figures]
                 + (["No figure: no part of it was reported from its sweep folder."]
                    if not self.figures else []) + [""])
@@ -799,8 +812,11 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
         ("P0 = 5e-2 compacts", "fig6", {"P0": 5e-2}, "delta_phi_plus", +1),
         ("P0 = 5e-2 gives extreme calA", "fig6", {"P0": 5e-2}, "calA_final", +1,
          "calA_final: mean calA at the run's last step.")]
+    # a sweep run in parts is judged as its whole grid, whose runs are the parts' runs
+    in_parts = {id(part) for whole in wholes for part in whole.parts}
+    judged = [s for s in sweeps if id(s) not in in_parts] + list(wholes)
     for kind in ("fig5", "fig4", "fig6"):
-        for k, figure_sweep in enumerate([s for s in sweeps if s.kind == kind] or [None]):
+        for k, figure_sweep in enumerate([s for s in judged if s.kind == kind] or [None]):
             if kind == "fig6":
                 lines += unchanged_lines(figure_sweep, BASE["fig6"])
             for title, _, values, quantity, sign, *note in (c for c in claims if c[1] == kind):
@@ -810,7 +826,7 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
                     continue
                 lines.append(claim_line(title, figure_sweep, values, BASE[kind], quantity, sign,
                                         *note))
-    lines += optimal_lines(sweeps)
+    lines += optimal_lines(judged)
     lines += ["", "### Per grid point, and what each figure cost", ""]
     whole_of = {id(part): whole for whole in wholes for part in whole.parts}
     for one in sorted(sweeps, key=lambda s: KINDS.index(s.kind), reverse=True):
@@ -908,7 +924,8 @@ def main():
     sweeps = [Sweep(kind, source, args.out, set(args.accept), args.sweeps)
               for kind, source in given]
     fig6 = next((s for s in sweeps if s.kind == "fig6"), None)
-    notes = [s.borrow_base(fig6) for s in sweeps if s.kind != "fig6"]
+    # a part is judged as its whole grid, which has its own base point or none
+    notes = [s.borrow_base(fig6) for s in sweeps if s.kind != "fig6" and not s.part_of]
     # the command as typed from the package's folder, with every option that changes the
     # section (not --out and --doc, where it goes), so that it can be run again
     words = [w for kind in KINDS if getattr(args, kind)
