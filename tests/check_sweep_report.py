@@ -55,8 +55,9 @@ REPORT = os.path.join(ROOT, "tools", "sweep_report.py")
 TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
 problems = []
 
-# delta_phi_plus of each run, by point and seed (seed 3 of P0 = 5e-2 is the failed run)
-DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.06, 10.0],
+# delta_phi_plus of each run, by point and seed (seed 3 of P0 = 5e-2 is the failed run; its two
+# accepted runs, 1 degree of freedom, resolve only a large difference: 80 standard errors)
+DPHI = {"P0=1e-3": [0.001, 0.002, 0.003], "P0=5e-2": [0.05, 0.0502, 10.0],
         "P0=1e-5": [0.0015, 0.0025, 0.0030], "P0=1e-7": [0.0012, 0.0021, 0.0033],
         "beta=30 eps_b=0.4": [0.0015, 0.0025, 0.0030],
         "beta=100 eps_b=0.01": [0.0, 0.0001, 0.0002],
@@ -186,6 +187,13 @@ def runs(quantity, values, status="ok"):
              "phi_half": "0.5"} for v in values]
 
 
+def many(quantity, mean, score=0.0, n=200, d=0.02):
+    """n runs of mean + score standard errors of a difference with a point of the same spread
+    (values mean +- d alternating): 398 degrees of freedom, nearly normal tails."""
+    shift = score * d * math.sqrt(2 / (n - 1))
+    return runs(quantity, [mean + shift + (d if k % 2 else -d) for k in range(n)])
+
+
 def check_verdict_rules():
     sys.path.insert(0, os.path.join(ROOT, "tools"))
     import sweep_report as report
@@ -204,47 +212,76 @@ def check_verdict_rules():
         ({"P0": 1e-4}, runs("delta_A_early", [5.0]) + runs("delta_A_early", [9.0], "failed"))])
     lines = report.unchanged_lines(close, {"P0": 1e-3})
     head = lines[0]
-    expect("no difference resolved at 2 standard errors" in head and "**holds**" not in head
+    expect("**no difference resolved** in 1 comparison " in head and "**holds**" not in head
            and "does not hold" not in head and "in 1 comparison " in head,
            f"no resolved difference: not 'no difference resolved' in 1 comparison: {head}")
-    expect(any("difference +1.2 standard errors (SE of the difference 0.016)" in x
-               for x in lines), f"the per-line difference and its SE: {lines}")
+    expect(any("difference +1.2 standard errors (SE of the difference 0.016; resolving needs "
+               "2.87)" in x for x in lines),
+           f"the per-line difference, its SE and what 3 runs a side need: {lines}")
     expect(any("at P0 = 0.0001" in x and "not compared" in x for x in lines),
            f"the pressure with one accepted run is not marked 'not compared': {lines}")
     # a resolved difference among the lower pressures: 'does not hold', with how many of that
-    # many comparisons chance alone would resolve (two-sided normal tail at 2 SE: 4.55 %)
+    # many comparisons chance alone would resolve (4.55 % each, two-sided)
     apart = StubSweep(report, "apart", [
         ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
         ({"P0": 1e-5}, runs("delta_A_early", [1.1, 1.12, 1.14])),
         ({"P0": 1e-6}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
     head = report.unchanged_lines(apart, {"P0": 1e-3})[0]
     expect("**does not hold**: 1 of 2 stays resolved once corrected for the 2 comparisons "
-           "(Holm); 1 of 2 exceeds 2 standard errors (with no difference at all, 2 "
-           "comparisons at 2 standard errors would resolve 0.091 by chance)" in head,
+           "(Holm); 1 of 2 resolves alone (with no difference at all, 2 comparisons would "
+           "resolve 0.091 by chance)" in head,
            f"a resolved lower pressure (+7.3 SE): not 'does not hold' with the chance note: "
            f"{head}")
-    # Holm steps down: of two differences at 2.5 and 2.1 SE the larger needs 2.28 SE (4.55 % /
-    # 2), the smaller then 2 SE (4.55 %): both stay (Bonferroni's 2.28 for both would keep one)
+    # Student's t: 2.5 standard errors with 3 runs a side (4 degrees of freedom) are not
+    # resolved, it needs 2.87; with 200 runs a side (nearly normal) they are
+    few = StubSweep(report, "few", [
+        ({"beta": 30}, runs("delta_phi_plus", [1.0208, 1.0408, 1.0608])),
+        ({"beta": 100}, runs("delta_phi_plus", [0.98, 1.0, 1.02]))])
+    line = report.claim_line("low beta compacts", few, {"beta": 30}, {"beta": 100},
+                             "delta_phi_plus", +1)
+    expect("difference +2.5 standard errors" in line and "**cannot be told at this resolution** "
+           "(resolving needs 2.87 standard errors with these runs)" in line,
+           f"2.5 SE with 3 runs a side: not 'cannot be told' with 2.87 needed: {line}")
+    lots = StubSweep(report, "lots", [({"beta": 30}, many("delta_phi_plus", 1.0, 2.5)),
+                                      ({"beta": 100}, many("delta_phi_plus", 1.0))])
+    line = report.claim_line("low beta compacts", lots, {"beta": 30}, {"beta": 100},
+                             "delta_phi_plus", +1)
+    expect("difference +2.5 standard errors: **holds**" in line,
+           f"2.5 SE with 200 runs a side: not 'holds': {line}")
+    # Holm steps down: of two differences at 2.5 and 2.1 SE the larger needs 2.29 SE (4.55 % /
+    # 2), the smaller then 2.01 SE (4.55 %; 398 degrees of freedom): both stay (Bonferroni's
+    # 2.29 for both would keep one)
     stepped = StubSweep(report, "stepped", [
-        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
-        ({"P0": 1e-5}, runs("delta_A_early", [1.0208, 1.0408, 1.0608])),
-        ({"P0": 1e-6}, runs("delta_A_early", [0.9457, 0.9657, 0.9857]))])
+        ({"P0": 1e-3}, many("delta_A_early", 1.0)),
+        ({"P0": 1e-5}, many("delta_A_early", 1.0, 2.5)),
+        ({"P0": 1e-6}, many("delta_A_early", 1.0, -2.1))])
     head = report.unchanged_lines(stepped, {"P0": 1e-3})[0]
     expect("**does not hold**: 2 of 2 stay resolved once corrected for the 2 comparisons (Holm)"
            in head, f"differences at +2.5 and -2.1 SE: not both kept by Holm's step-down: {head}")
-    # one of two differences at +2.2 SE: resolved at 2 SE alone, but Holm asks the larger of
-    # two for a two-sided tail of 4.55 % / 2, i.e. 2.28 SE: not 'does not hold'
+    # one of two differences at +2.2 SE: resolved alone (2.01 needed), but Holm asks the
+    # stronger of two for a two-sided tail of 4.55 % / 2, i.e. 2.29 SE: not 'does not hold'
     borderline = StubSweep(report, "borderline", [
-        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
-        ({"P0": 1e-5}, runs("delta_A_early", [1.016, 1.036, 1.056])),
-        ({"P0": 1e-6}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
+        ({"P0": 1e-3}, many("delta_A_early", 1.0)),
+        ({"P0": 1e-5}, many("delta_A_early", 1.0, 2.2)),
+        ({"P0": 1e-6}, many("delta_A_early", 1.0, 0.5))])
     head = report.unchanged_lines(borderline, {"P0": 1e-3})[0]
-    expect("**no difference resolved** once corrected: 1 of 2 exceeds 2 standard errors" in head
-           and "none stays resolved once corrected for the 2 comparisons (Holm): the largest, "
-           "2.2 standard errors in size, is below the 2.28 the correction asks of it" in head
+    expect("**no difference resolved** once corrected: 1 of 2 resolves alone" in head
+           and "none stays resolved once corrected for the 2 comparisons (Holm): the strongest, "
+           "2.2 standard errors in size, is below the 2.29 the correction asks of it" in head
            and "does not hold" not in head and "**holds**" not in head,
            f"one of two differences at 2.2 SE: not 'no difference resolved once corrected': "
            f"{head}")
+    # Holm on Student's t: 2.4 SE with 10 runs a side (18 degrees of freedom) resolve alone
+    # (2.15 needed) but not as the stronger of two (2.49; normal tails would keep it at 2.28)
+    ten = StubSweep(report, "ten", [
+        ({"P0": 1e-3}, many("delta_A_early", 1.0, n=10)),
+        ({"P0": 1e-5}, many("delta_A_early", 1.0, 2.4, n=10)),
+        ({"P0": 1e-6}, many("delta_A_early", 1.0, 0.5, n=10))])
+    head = report.unchanged_lines(ten, {"P0": 1e-3})[0]
+    expect("1 of 2 resolves alone" in head and "the strongest, 2.4 standard errors in size, is "
+           "below the 2.49 the correction asks of it" in head and "does not hold" not in head,
+           f"2.4 SE of two with 10 runs a side: not 'no difference resolved once corrected' "
+           f"with 2.49 asked: {head}")
     # the base point of the default: no point resolved lower, and how many could be compared
     base = StubSweep(report, "base", [
         ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
@@ -262,21 +299,21 @@ def check_verdict_rules():
         ({"P0": 1e-4}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
     optimal = [x for x in report.optimal_lines([lower]) if "delta_A_early" in x]
     expect(len(optimal) == 1 and "**does not hold**: resolved lower at P0=1e-05 (0.52); 1 of 2 "
-           "stays resolved once corrected for the 2 comparisons (Holm); 1 of 2 exceeds 2 "
-           "standard errors (with no difference at all, 2 comparisons at 2 standard errors "
-           "would resolve 0.046 by chance)" in optimal[0],
+           "stays resolved once corrected for the 2 comparisons (Holm); 1 of 2 resolves alone "
+           "(with no difference at all, 2 comparisons would resolve 0.046 by chance)"
+           in optimal[0],
            f"near-optimal with a point resolved lower: {optimal}")
-    # a point lower by 2.2 SE of two: one-sided, Holm asks the larger of two for 2.28 % / 2,
-    # i.e. 2.28 SE: not 'does not hold'
+    # a point lower by 2.2 SE of two: one-sided, Holm asks the stronger of two for 2.28 % / 2,
+    # i.e. 2.29 SE: not 'does not hold'
     slightly = StubSweep(report, "slightly", [
-        ({"P0": 1e-3}, runs("delta_A_early", [0.98, 1.0, 1.02])),
-        ({"P0": 1e-5}, runs("delta_A_early", [0.944, 0.964, 0.984])),
-        ({"P0": 1e-4}, runs("delta_A_early", [1.0, 1.02, 1.04]))])
+        ({"P0": 1e-3}, many("delta_A_early", 1.0)),
+        ({"P0": 1e-5}, many("delta_A_early", 1.0, -2.2)),
+        ({"P0": 1e-4}, many("delta_A_early", 1.0, 0.5))])
     optimal = [x for x in report.optimal_lines([slightly]) if "delta_A_early" in x]
     expect(len(optimal) == 1 and "**no point resolved lower** once corrected, among the 2 of 2 "
-           "other points" in optimal[0] and "lower at 2 standard errors: P0=1e-05 (0.964)"
-           in optimal[0] and "the largest, 2.2 standard errors in size, is below the 2.28" in optimal[0]
-           and "does not hold" not in optimal[0],
+           "other points" in optimal[0] and "resolved lower alone: P0=1e-05 (0.996)"
+           in optimal[0] and "the strongest, 2.2 standard errors in size, is below the 2.29"
+           in optimal[0] and "does not hold" not in optimal[0],
            f"near-optimal with a point lower by 2.2 SE of two: {optimal}")
 
 
@@ -456,7 +493,8 @@ def check_parts(scratch, out):
     result, both = report(["--fig5"] + folders, doc, out)
     expect(result.returncode == 0, f"two parts: exit {result.returncode}, {result.stderr}")
     check_claim(both, "low beta compacts", "beta=30 eps_b=0.4", "beta=100 eps_b=0.4",
-                "**holds**", "(delta_phi_plus; fig5_w)")
+                "**cannot be told at this resolution** (resolving needs 4.02",
+                "(delta_phi_plus; fig5_w)")
     expect("6 of 9 runs done, from its parts fig5_wa and fig5_wb" in both,
            "two parts: the whole's progress is not both parts'")
     drawn = list(csv.DictReader(open(os.path.join(out, "fig5_w_heatmaps.csv"))))

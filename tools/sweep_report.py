@@ -19,8 +19,8 @@ delta_phi_plus against P0 and the calA curves), and what the sweep cost (runs, l
 wall time). Then the section between SECTION_BEGIN and SECTION_END of --doc is replaced
 (appended the first time): per direction of the paper, the ensemble means, their standard
 errors, and the verdict by the rule of compare() below. Nothing in the section is typed by
-hand; a sweep left out or not run yields "not run". Needs python3-numpy and python3-matplotlib
-(for the figures).
+hand; a sweep left out or not run yields "not run". Needs python3-scipy (Student's t), and
+python3-numpy and python3-matplotlib for the figures.
 
 A CSV in place of a DIR is such an archive, OUT/<sweep>_summary.csv, read back where the sweep
 folder is gone (sweep folders hold gigabytes of dumps and stay on the machine that ran them):
@@ -35,7 +35,6 @@ import math
 import os
 import shlex
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -44,6 +43,10 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import sweep  # noqa: E402  (the parameter-file reader)
+import mesophyll_frames  # noqa: E402
+
+mesophyll_frames.require(["scipy"])
+from scipy.stats import norm, t as student  # noqa: E402
 
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 PLOT = os.path.join(ROOT, "tools", "sweep_plot.py")
@@ -55,8 +58,11 @@ PUBLISHED_BEGIN = "<!-- published: tools/validate.py --published -->"
 # a run withdrawn after it finished: its outputs moved to runs/<id>/withdrawn/, with the reason
 # in this file there; it reads unfinished, and a resumed sweep runs it again
 WITHDRAWN_REASON = os.path.join("withdrawn", "REASON.txt")
-# a difference counts as resolved when it exceeds this many standard errors of the difference
+# a difference counts as resolved when it is as unlikely by chance as a normal one beyond this
+# many standard errors of the difference (two-sided: LEVEL, 4.55 %); with few runs the difference
+# over its standard error follows Student's t (Welch), whose wider tails need more (needed())
 RESOLVED = 2.0
+LEVEL = math.erfc(RESOLVED / math.sqrt(2))
 # z near phi_patch = 0.5 compares two points only where both came this close to 0.5
 NEAR_HALF = 0.05
 # the captions' highlighted points: Fig 4 (lambda, delta_a), Fig 5 (beta, eps_b)
@@ -114,25 +120,53 @@ class Ensemble:
         return ", ".join(f"{self.counts[s]} {s}" for s in order if self.counts.get(s))
 
 
+def welch_df(sa, na, sb, nb):
+    """Welch's degrees of freedom of the difference of two means with standard errors sa and sb
+    from na and nb runs (infinite where neither spreads)."""
+    va, vb = sa * sa, sb * sb
+    if va + vb == 0:
+        return math.inf
+    return (va + vb) ** 2 / (va * va / (na - 1) + vb * vb / (nb - 1))
+
+
+def tail(score, df, sides):
+    """Student's t tail beyond score at df degrees of freedom (normal where df is infinite):
+    the chance of a difference this large (one side: in the stated direction) with no
+    difference at all."""
+    law = norm if math.isinf(df) else student(df)
+    return 2 * law.sf(abs(score)) if sides == 2 else law.sf(score)
+
+
+def needed(df, chance=LEVEL, sides=2):
+    """The size, in standard errors, that a difference with df degrees of freedom must exceed
+    to arise by chance no more often than `chance` (RESOLVED where df is infinite)."""
+    law = norm if math.isinf(df) else student(df)
+    return float(law.isf(chance / 2 if sides == 2 else chance))
+
+
 def compare(a, b, quantity, sign):
     """Is quantity larger (sign +1) or smaller (sign -1) at ensemble a than at b? 'holds' when
-    the difference of the means, in the stated direction, exceeds RESOLVED standard errors of
-    the difference (the two standard errors added in quadrature); 'opposite' when it does so
-    against it; 'not resolved' in between; 'equal' when every run of both has the same value
-    (no spread: these runs cannot show a difference either way); 'too few runs' below two
-    accepted runs either side.
-    Returns (verdict, mean_a, se_a, n_a, mean_b, se_b, n_b, difference / its standard error)."""
+    the difference of the means, in the stated direction, exceeds needed(df) standard errors
+    of the difference (the two standard errors added in quadrature; df Welch's): with no
+    difference there, as rare as RESOLVED standard errors of a normal difference; 'opposite'
+    when it does so against it; 'not resolved' in between; 'equal' when every run of both has
+    the same value (no spread: these runs cannot show a difference either way); 'too few runs'
+    below two accepted runs either side.
+    Returns (verdict, mean_a, se_a, n_a, mean_b, se_b, n_b, difference / its standard error,
+    degrees of freedom)."""
     ma, _, sa, na = a.stats(quantity)
     mb, _, sb, nb = b.stats(quantity)
     if na < 2 or nb < 2:
-        return "too few runs", ma, sa, na, mb, sb, nb, None
+        return "too few runs", ma, sa, na, mb, sb, nb, None, None
     se = math.hypot(sa, sb)
     diff = sign * (ma - mb)
+    df = welch_df(sa, na, sb, nb)
     if se == 0 and diff == 0:    # every run of both gives one value: no spread to resolve
-        return "equal", ma, sa, na, mb, sb, nb, 0.0
+        return "equal", ma, sa, na, mb, sb, nb, 0.0, df
     score = diff / se if se > 0 else (math.inf if diff > 0 else -math.inf)
-    verdict = "holds" if score > RESOLVED else "opposite" if score < -RESOLVED else "not resolved"
-    return verdict, ma, sa, na, mb, sb, nb, score
+    bound = needed(df)
+    verdict = "holds" if score > bound else "opposite" if score < -bound else "not resolved"
+    return verdict, ma, sa, na, mb, sb, nb, score, df
 
 
 def number(text):
@@ -544,14 +578,14 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
     if a is None or b is None:
         missing = name(a_values) if a is None else name(b_values)
         return f"- *{title}*: not run ({sweep.name} has no point {missing})."
-    verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, sign)
+    verdict, ma, sa, na, mb, sb, nb, score, df = compare(a, b, quantity, sign)
     far = [p for p in (a, b) if p.stats("phi_half")[0] is not None
            and abs(p.stats("phi_half")[0] - 0.5) > NEAR_HALF]
     if quantity == "z_half" and far and verdict != "too few runs":
         verdict = "not near 0.5"
     text = {"holds": "**holds**", "opposite": "**does not hold: the opposite is resolved**",
-            "not resolved": f"**cannot be told at this resolution** (difference below "
-                            f"{RESOLVED:g} standard errors)",
+            "not resolved": f"**cannot be told at this resolution** (resolving needs "
+                            f"{fmt(df and needed(df), '.2f')} standard errors with these runs)",
             "equal": f"**cannot be told**: every run of both gives {quantity} = "
                      f"{fmt(ma, 'g')}, so these runs cannot show a difference"
                      + (" (the runs stop once phi_patch falls below phi_stop, and none "
@@ -569,58 +603,52 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             + (f" {note}" if note else ""))
 
 
-def tail(score, sides):
-    """The normal tail beyond score: the chance of a difference this large (one side: in the
-    stated direction) with no difference at all."""
-    if sides == 2:
-        return math.erfc(abs(score) / math.sqrt(2))
-    return math.erfc(score / math.sqrt(2)) / 2
-
-
-def holm(scores, sides):
-    """Which of a family's comparisons stay resolved once corrected for their number (Holm's
-    step-down): the family as a whole is as unlikely to resolve a difference by chance as one
-    comparison at RESOLVED standard errors. Returns (the indices that stay, the score the
-    largest one needed)."""
-    level = tail(RESOLVED, sides)
-    order = sorted(range(len(scores)), key=lambda k: tail(scores[k], sides))
+def holm(family, sides):
+    """Which of a family's comparisons ((score, df) each) stay resolved once corrected for
+    their number (Holm's step-down): the family as a whole is as unlikely to resolve a
+    difference by chance as one comparison alone (LEVEL; one side: half of it). Returns the
+    indices that stay."""
+    level = LEVEL if sides == 2 else LEVEL / 2
+    chances = [tail(score, df, sides) for score, df in family]
+    order = sorted(range(len(family)), key=lambda k: chances[k])
     stay = []
     for rank, k in enumerate(order):
-        if tail(scores[k], sides) > level / (len(scores) - rank):
+        if chances[k] > level / (len(family) - rank):
             break
         stay.append(k)
-    needed = statistics.NormalDist().inv_cdf(1 - level / len(scores) / (2 if sides == 2 else 1))
-    return stay, needed
+    return stay
 
 
-def corrected_note(scores, sides):
-    """What a family of comparisons (their scores, in standard errors) shows after the
+def corrected_note(family, sides):
+    """What a family of comparisons ((score in standard errors, df) each) shows after the
     correction: (the indices of those that stay resolved, a sentence saying so, or how far the
-    largest fell short); ([], '') where none exceeds RESOLVED at all."""
-    tested = len(scores)
-    resolved = sum((abs(x) if sides == 2 else x) > RESOLVED for x in scores)
+    strongest fell short); ([], '') where none resolves even alone."""
+    tested = len(family)
+    level = LEVEL if sides == 2 else LEVEL / 2
+    resolved = sum(tail(score, df, sides) <= level for score, df in family)
     if not resolved:
         return [], ""
-    stay, needed = holm(scores, sides)
-    largest = max(abs(x) for x in scores) if sides == 2 else max(scores)
-    family = f"{tested} comparison{'s' if tested != 1 else ''}"
-    raw = (f"{resolved} of {tested} exceed{'s' if resolved == 1 else ''} {RESOLVED:g} standard "
-           f"errors ({chance(tested, sides)})")
+    stay = holm(family, sides)
+    score, df = min(family, key=lambda c: tail(c[0], c[1], sides))
+    asked = needed(df, level / tested, sides)
+    family_text = f"{tested} comparison{'s' if tested != 1 else ''}"
+    raw = (f"{resolved} of {tested} resolve{'s' if resolved == 1 else ''} alone "
+           f"({chance(tested, sides)})")
     if stay:
         return stay, (f"{len(stay)} of {tested} stay{'s' if len(stay) == 1 else ''} resolved "
-                      f"once corrected for the {family} (Holm); {raw}")
-    return stay, (f"{raw}, but none stays resolved once corrected for the {family} (Holm): the "
-                  f"largest, {largest:.1f} standard errors in size, is below the {needed:.2f} "
-                  f"the correction asks of it")
+                      f"once corrected for the {family_text} (Holm); {raw}")
+    return stay, (f"{raw}, but none stays resolved once corrected for the {family_text} (Holm): "
+                  f"the strongest, {abs(score):.1f} standard errors in size, is below the "
+                  f"{asked:.2f} the correction asks of it")
 
 
 def chance(tests, sides):
     """How many of `tests` comparisons would resolve by chance alone, with no difference there:
-    the verdict rule tests each at RESOLVED standard errors and does not correct for their
-    number (normal tails: about 4.6 % each two-sided, 2.3 % one-sided at 2 SE)."""
-    p = math.erfc(RESOLVED / math.sqrt(2)) / (2 if sides == 1 else 1)
-    return (f"with no difference at all, {tests} comparison{'s' if tests != 1 else ''} at "
-            f"{RESOLVED:g} standard errors would resolve {tests * p:.2g} by chance")
+    the verdict rule resolves each at the chance LEVEL (two-sided, 4.55 %; one-sided half of
+    it) and does not correct for their number."""
+    p = LEVEL / (2 if sides == 1 else 1)
+    return (f"with no difference at all, {tests} comparison{'s' if tests != 1 else ''} would "
+            f"resolve {tests * p:.2g} by chance")
 
 
 def reach_note(e):
@@ -637,7 +665,7 @@ def unchanged_lines(sweep, reference):
     """'P0 up to 1e-3 hardly matters': each lower pressure of the sweep (in the order of its
     plan) against the reference one, for each quantity of the figure. No resolved difference
     is not a shown equality: the verdict says so, and how large a difference would have been
-    resolved (RESOLVED standard errors)."""
+    resolved (needed() standard errors, per line)."""
     if sweep is None:
         return ["- *P0 up to 1e-3 hardly matters*: not run (no Fig 6 sweep folder given)."]
     b = sweep.at(**reference)
@@ -649,10 +677,10 @@ def unchanged_lines(sweep, reference):
         if a is None or b is None:
             continue
         for quantity in ("delta_A_early", "delta_A_late", "delta_phi_plus", "z_half"):
-            verdict, ma, sa, na, mb, sb, nb, score = compare(a, b, quantity, +1)
+            verdict, ma, sa, na, mb, sb, nb, score, df = compare(a, b, quantity, +1)
             counts[verdict] = counts.get(verdict, 0) + 1
             if verdict in ("holds", "opposite", "not resolved"):
-                scores.append(score)
+                scores.append((score, df))
             where = (f"  - {quantity}: {mean_se(ma, sa, na)} at P0 = {values['P0']:g} against "
                      f"{mean_se(mb, sb, nb)} at {reference['P0']:g}: ")
             if verdict == "too few runs":
@@ -662,7 +690,8 @@ def unchanged_lines(sweep, reference):
                                      f"to resolve, none shown either")
             else:
                 lines.append(where + f"difference {fmt(score, '+.1f')} standard errors (SE of "
-                                     f"the difference {fmt(math.hypot(sa, sb), '.2g')})")
+                                     f"the difference {fmt(math.hypot(sa, sb), '.2g')}; "
+                                     f"resolving needs {needed(df):.2f})")
     resolved = counts.get("holds", 0) + counts.get("opposite", 0)
     tested = resolved + counts.get("not resolved", 0)
     stay, note = corrected_note(scores, 2)
@@ -677,10 +706,10 @@ def unchanged_lines(sweep, reference):
     elif resolved:
         verdict = f"**no difference resolved** once corrected: {note}"
     else:
-        verdict = (f"**no difference resolved at {RESOLVED:g} standard errors** in {tested} "
-                   f"comparison{'s' if tested != 1 else ''} (consistent with the claim, not "
-                   f"shown: a difference smaller than {RESOLVED:g} SE of the difference, given "
-                   f"per line, could be there)")
+        verdict = (f"**no difference resolved** in {tested} comparison"
+                   f"{'s' if tested != 1 else ''} (consistent with the claim, not shown: a "
+                   f"difference smaller than the standard errors resolving needs, given per "
+                   f"line, could be there)")
     return [f"- *P0 up to 1e-3 hardly matters* ({sweep.name}): {verdict}"
             + (f"; not compared: {', '.join(left)}" if left else "") + ":"] + lines
 
@@ -705,11 +734,11 @@ def optimal_lines(sweeps):
                 if m is None or mb is None:
                     continue
                 ranks.append(m)
-                verdict, *_, score = compare(e, base, quantity, -1)
+                verdict, *_, score, df = compare(e, base, quantity, -1)
                 if e.rows != base.rows and verdict != "too few runs":
                     compared += 1
                 if verdict in ("holds", "opposite", "not resolved") and e.rows != base.rows:
-                    scores.append(score)    # the family: comparisons with spread
+                    scores.append((score, df))    # the family: comparisons with spread
                     labels.append(f"{label} ({m:.3g})")
                 if verdict == "holds":
                     better.append(f"{label} ({m:.3g})")
@@ -728,13 +757,13 @@ def optimal_lines(sweeps):
             lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
                          f"rank {rank} of the {len(ranks)} points with an accepted run "
                          f"({len(everywhere)} points in the sweep); "
-                         + (f"**no point resolved lower at {RESOLVED:g} standard errors** "
-                            f"{among} (consistent, not shown)" if not better else
+                         + (f"**no point resolved lower** {among} (consistent, not shown)"
+                            if not better else
                             f"**does not hold**: resolved lower at "
                             f"{', '.join(labels[k] for k in sorted(stay))}; {note}"
                             if stay else
-                            f"**no point resolved lower** once corrected, {among}: lower at "
-                            f"{RESOLVED:g} standard errors: {', '.join(better)}; {note}"))
+                            f"**no point resolved lower** once corrected, {among}: resolved "
+                            f"lower alone: {', '.join(better)}; {note}"))
     if not lines:
         return ["- *the default is near-optimal in delta_A*: not run."]
     return ["- *the default is near-optimal in delta_A* (the base point of each sweep against "
@@ -785,20 +814,25 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
              "the three points of the paper's text (`examples/sweep/reference_paper_text.txt`), "
              "not the paper's nine measured points. This section supersedes the two-seed "
              "section \"Sensitivity\" above for the paper's directions.", "",
-             f"Verdict rule: a direction **holds** where the difference of the two ensemble "
-             f"means, in the stated direction, exceeds {RESOLVED:g} standard errors of the "
-             f"difference; it **cannot be told at this resolution** where it is smaller; "
-             f"**the opposite is resolved** where it exceeds {RESOLVED:g} against it. Where "
-             f"every run of both points gives one value (no spread), the runs cannot show the "
-             f"direction: *cannot be told*. For the claims that something hardly matters or "
-             f"is near-optimal, no resolved difference is consistent with the claim but does "
-             f"not show it: those lines say *no difference resolved*, with the standard "
-             f"errors, never *holds*. Such a claim is a family of comparisons (every lower "
-             f"pressure and quantity; every other grid point), and among many, some exceed "
-             f"{RESOLVED:g} standard errors by chance: it **does not hold** only where a "
-             f"difference stays resolved after Holm's correction for the family's size, which "
-             f"makes the whole family as unlikely to resolve one by chance as a single "
-             f"comparison at {RESOLVED:g} standard errors.", ""]
+             f"Verdict rule: a difference is **resolved** where, with no difference there, "
+             f"one this large would arise by chance no more often than a normal one beyond "
+             f"{RESOLVED:g} standard errors ({100 * LEVEL:.2f} %, two-sided). The difference of "
+             f"the two ensemble means over its standard error follows Student's t with Welch's "
+             f"degrees of freedom, whose tails are wider with few runs: resolving needs "
+             f"{needed(4):.2f} standard errors with 3 runs a side, {needed(8):.2f} with 5, "
+             f"{needed(18):.2f} with 10 (equal spreads), {RESOLVED:g} with very many. A "
+             f"direction **holds** where the difference in the stated direction is resolved; "
+             f"it **cannot be told at this resolution** where it is not; **the opposite is "
+             f"resolved** where the difference against it is. Where every run of both points "
+             f"gives one value (no spread), the runs cannot show the direction: *cannot be "
+             f"told*. For the claims that something hardly matters or is near-optimal, no "
+             f"resolved difference is consistent with the claim but does not show it: those "
+             f"lines say *no difference resolved*, with the standard errors, never *holds*. "
+             f"Such a claim is a family of comparisons (every lower pressure and quantity; "
+             f"every other grid point), and among many, some resolve by chance: it **does not "
+             f"hold** only where a difference stays resolved after Holm's correction for the "
+             f"family's size, which makes the whole family as unlikely to resolve one by "
+             f"chance as a single comparison.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
     # (title, figure, point, quantity, sign[, note]) of each direction of the paper
     claims = [
