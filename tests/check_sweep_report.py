@@ -330,6 +330,14 @@ def report(args, doc, out, sweeps=None):
     return result, open(doc).read()
 
 
+def report_without_base(scratch, fig6, doc, out, name, fixed, protocol=None):
+    """The report of a Fig 5 sweep of (30, 0.4) alone, which lacks its base point, with the Fig
+    6 sweep fig6 that may lend it."""
+    folder = plan(scratch, name, "fig5.mesophyll", ["beta=30 eps_b=0.4"], fixed, protocol)
+    fake_results(folder)
+    return report(["--fig6", fig6, "--fig5", folder], doc, out)
+
+
 def check_two_of_a_figure(scratch, fig6, fig5, out):
     """Two Fig 6 sweeps (fig6_u, planned from its own file with fig6_t's grid): each gets the
     figure's directions and its own table, the first lends the base point; one sweep given
@@ -443,10 +451,8 @@ def check_archives(scratch, fig6, from_folders_of, out):
     expect(len(default.findall(text)) == 1, "in.mesophyll: no 'variable tmaxadapt index no'")
     with open(protocol, "w") as f:
         f.write(default.sub(r"\g<1>yes", text))
-    folder = plan(scratch, "fig5_own", "fig5.mesophyll", ["beta=30 eps_b=0.4"],
-                  "steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11", protocol)
-    fake_results(folder)
-    result, text = report(["--fig6", fig6, "--fig5", folder], doc, out)
+    result, text = report_without_base(scratch, fig6, doc, out, "fig5_own",
+                                       "steps 3 phi_stop 0.45 P0 1e-5 ftol 1e-11", protocol)
     expect(result.returncode == 0 and "fig5_own has no base point; fig6_t's P0 = 1e-05 runs "
            "differ in tmaxadapt: none borrowed" in text,
            f"a sweep whose own protocol defaults to tmaxadapt yes borrowed from one that runs "
@@ -633,10 +639,8 @@ def main():
         check_parts(scratch, out)
         # a Fig 5 sweep that leaves P0 to its parameter set (1e-7) and lacks its base borrows
         # fig6_t's 1e-7 runs: the borrowing reads the set's P0 (a KeyError on P0 before)
-        set_p0 = plan(scratch, "fig5_set_p0", "fig5.mesophyll", ["beta=30 eps_b=0.4"],
-                      "steps 3 phi_stop 0.45 ftol 1e-11")
-        fake_results(set_p0)
-        result, text = report(["--fig6", fig6, "--fig5", set_p0], doc, out)
+        result, text = report_without_base(scratch, fig6, doc, out, "fig5_set_p0",
+                                           "steps 3 phi_stop 0.45 ftol 1e-11")
         expect(result.returncode == 0 and "fig5_set_p0's base point {'beta': 100, 'eps_b': 0.4} "
                "is fig6_t's P0 = 1e-07 point" in text,
                f"a sweep with P0 from its set: exit {result.returncode}, "

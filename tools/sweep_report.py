@@ -129,19 +129,23 @@ def welch_df(sa, na, sb, nb):
     return (va + vb) ** 2 / (va * va / (na - 1) + vb * vb / (nb - 1))
 
 
+def difference_law(df):
+    """The law of a difference over its standard error: Student's t at df degrees of freedom,
+    the normal where df is infinite."""
+    return norm if math.isinf(df) else student(df)
+
+
 def tail(score, df, sides):
-    """Student's t tail beyond score at df degrees of freedom (normal where df is infinite):
-    the chance of a difference this large (one side: in the stated direction) with no
-    difference at all."""
-    law = norm if math.isinf(df) else student(df)
+    """The tail beyond score: the chance of a difference this large (one side: in the stated
+    direction) with no difference at all."""
+    law = difference_law(df)
     return 2 * law.sf(abs(score)) if sides == 2 else law.sf(score)
 
 
 def needed(df, chance=LEVEL, sides=2):
     """The size, in standard errors, that a difference with df degrees of freedom must exceed
     to arise by chance no more often than `chance` (RESOLVED where df is infinite)."""
-    law = norm if math.isinf(df) else student(df)
-    return float(law.isf(chance / 2 if sides == 2 else chance))
+    return float(difference_law(df).isf(chance / 2 if sides == 2 else chance))
 
 
 def compare(a, b, quantity, sign):
@@ -603,17 +607,14 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             + (f" {note}" if note else ""))
 
 
-def holm(family, sides):
-    """Which of a family's comparisons ((score, df) each) stay resolved once corrected for
-    their number (Holm's step-down): the family as a whole is as unlikely to resolve a
-    difference by chance as one comparison alone (LEVEL; one side: half of it). Returns the
-    indices that stay."""
-    level = LEVEL if sides == 2 else LEVEL / 2
-    chances = [tail(score, df, sides) for score, df in family]
-    order = sorted(range(len(family)), key=lambda k: chances[k])
+def holm(chances, level):
+    """Which of a family's comparisons (their chances by tail()) stay resolved once corrected
+    for their number (Holm's step-down): the family as a whole is as unlikely to resolve a
+    difference by chance as one comparison alone at `level`. Returns the indices that stay."""
+    order = sorted(range(len(chances)), key=lambda k: chances[k])
     stay = []
     for rank, k in enumerate(order):
-        if chances[k] > level / (len(family) - rank):
+        if chances[k] > level / (len(chances) - rank):
             break
         stay.append(k)
     return stay
@@ -624,12 +625,13 @@ def corrected_note(family, sides):
     correction: (the indices of those that stay resolved, a sentence saying so, or how far the
     strongest fell short); ([], '') where none resolves even alone."""
     tested = len(family)
-    level = LEVEL if sides == 2 else LEVEL / 2
-    resolved = sum(tail(score, df, sides) <= level for score, df in family)
+    level = LEVEL if sides == 2 else LEVEL / 2    # one side: half of it
+    chances = [tail(score, df, sides) for score, df in family]
+    resolved = sum(c <= level for c in chances)
     if not resolved:
         return [], ""
-    stay = holm(family, sides)
-    score, df = min(family, key=lambda c: tail(c[0], c[1], sides))
+    stay = holm(chances, level)
+    score, df = family[min(range(tested), key=lambda k: chances[k])]
     asked = needed(df, level / tested, sides)
     family_text = f"{tested} comparison{'s' if tested != 1 else ''}"
     raw = (f"{resolved} of {tested} resolve{'s' if resolved == 1 else ''} alone "
