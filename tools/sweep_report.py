@@ -142,6 +142,12 @@ def tail(score, df, sides):
     return 2 * law.sf(abs(score)) if sides == 2 else law.sf(score)
 
 
+def resolving_chance(sides):
+    """The chance at which one comparison resolves: LEVEL two-sided, half of it on one side (the
+    same bound on a difference in the stated direction)."""
+    return LEVEL if sides == 2 else LEVEL / 2
+
+
 def needed(df, chance=LEVEL, sides=2):
     """The size, in standard errors, that a difference with df degrees of freedom must exceed
     to arise by chance no more often than `chance` (RESOLVED where df is infinite)."""
@@ -625,14 +631,14 @@ def corrected_note(family, sides):
     correction: (the indices of those that stay resolved, a sentence saying so, or how far the
     strongest fell short); ([], '') where none resolves even alone."""
     tested = len(family)
-    level = LEVEL if sides == 2 else LEVEL / 2    # one side: half of it
+    alone = resolving_chance(sides)
     chances = [tail(score, df, sides) for score, df in family]
-    resolved = sum(c <= level for c in chances)
+    resolved = sum(c <= alone for c in chances)
     if not resolved:
         return [], ""
-    stay = holm(chances, level)
+    stay = holm(chances, alone)
     score, df = family[min(range(tested), key=lambda k: chances[k])]
-    asked = needed(df, level / tested, sides)
+    asked = needed(df, alone / tested, sides)
     family_text = f"{tested} comparison{'s' if tested != 1 else ''}"
     raw = (f"{resolved} of {tested} resolve{'s' if resolved == 1 else ''} alone "
            f"({chance(tested, sides)})")
@@ -648,9 +654,8 @@ def chance(tests, sides):
     """How many of `tests` comparisons would resolve by chance alone, with no difference there:
     the verdict rule resolves each at the chance LEVEL (two-sided, 4.55 %; one-sided half of
     it) and does not correct for their number."""
-    p = LEVEL / (2 if sides == 1 else 1)
     return (f"with no difference at all, {tests} comparison{'s' if tests != 1 else ''} would "
-            f"resolve {tests * p:.2g} by chance")
+            f"resolve {tests * resolving_chance(sides):.2g} by chance")
 
 
 def reach_note(e):
