@@ -324,7 +324,9 @@ AFTER_PART_C = (
     ("<!-- low bending: validation/published/low_bending.py, written by hand -->",
      "<!-- /low bending -->"),
     ("<!-- low beta: validation/published/low_beta.py, written by hand -->",
-     "<!-- /low beta -->"))
+     "<!-- /low beta -->"),
+    ("<!-- high lambda: validation/published/high_lambda.py, written by hand -->",
+     "<!-- /high lambda -->"))
 THREED_BEGIN, THREED_END = ("<!-- 3d: examples/polyhedra/in.grow_tissue3d, written by hand -->",
                             "<!-- /3d -->")
 

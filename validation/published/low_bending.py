@@ -20,44 +20,11 @@ Each row gives phi_patch, calA and z of that state and the pairs of cells whose 
 overlap as fix dpoly/check counts them (and the first pair it names).
 """
 import os
-import re
-import sys
 
 import same_tissue
 
 EPS_B = ("0.01", "0.03", "0.1", "0.4", "0.6")
 COLUMNS = ["eps_b", "code", "phi_patch", "calA", "z", "interpenetrating_pairs", "first_pair"]
-PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate \(first: cells (\d+) and (\d+)\)")
-PROGRESS = re.compile(r"^growth step 2/2: .* phi_patch (\S+) <calA> (\S+) <z> (\S+)")
-
-
-def pairs_in(line):
-    """(count, 'a-b') of fix dpoly/check's line, (0, '') where it names none."""
-    m = PAIRS.search(line or "")
-    return (int(m.group(1)), f"{m.group(2)}-{m.group(3)}") if m else (0, "")
-
-
-def published(binary, lmp, work, eps_b):
-    folder = f"published_{eps_b}"
-    rows = same_tissue.published(binary, lmp, work, folder, "20261122",
-                                 ["--steps", "1", "--set", f"kb0={eps_b}"])
-    frame = next(r for r in rows if r["growth_steps"] == "1")
-    # in.measure's fix dpoly/check lines, one per frame: the last is frame 1's
-    checks = [line for line in open(os.path.join(work, folder, "log.measure"))
-              if line.startswith("fix dpoly/check:")]
-    count, first = pairs_in(checks[-1])
-    if count != int(frame["interpenetrating_pairs"]):
-        sys.exit(f"{work}/{folder}: the check line and the CSV disagree on the pairs")
-    return [frame["phi_patch"], frame["calA"], frame["z"], count, first]
-
-
-def package(lmp, work, eps_b, mode):
-    folder = same_tissue.package(lmp, work, f"{mode}_{eps_b}", mode,
-                                 {"eps_b": eps_b, "steps": "2"})
-    log = open(os.path.join(folder, "log.lammps")).read().splitlines()
-    state = next(PROGRESS.match(line).groups() for line in log if PROGRESS.match(line))
-    check = next(line for line in log if line.startswith("fix dpoly/check: minimum 2 "))
-    return list(state) + list(pairs_in(check))
 
 
 def main():
@@ -67,16 +34,14 @@ def main():
     same_tissue.driver_input(a.work)
     rows = []
     for eps_b in EPS_B:
-        rows.append([eps_b, "published"] + published(binary, lmp, a.work, eps_b))
+        rows.append([eps_b, "published"] + same_tissue.published_first_step(
+            binary, lmp, a.work, f"published_{eps_b}", [f"kb0={eps_b}"]))
         for mode in same_tissue.PACKAGE_MODES:
-            rows.append([eps_b, mode] + package(lmp, a.work, eps_b, mode))
+            rows.append([eps_b, mode] + same_tissue.package_first_step(
+                lmp, a.work, f"{mode}_{eps_b}", mode, {"eps_b": eps_b}))
         print(f"eps_b {eps_b}: done", flush=True)
     same_tissue.write_csv(a.out, COLUMNS, rows)
-    width = max(len(c) for c in same_tissue.PACKAGE_MODES)
-    print(f"{'eps_b':6} {'code':{width}} phi_patch calA   z     pairs (first)")
-    for r in rows:
-        print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
-              f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
+    same_tissue.print_first_steps("eps_b", rows)
     print(f"wrote {a.out}")
 
 

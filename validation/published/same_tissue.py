@@ -1,17 +1,20 @@
-"""Runs of both codes from the same state for the Fig 5 comparisons (low_bending.py,
-low_beta.py): tissue_N16.data with Fig 5's parameter file, its base set (theta0_min -3 pi/20)
-at P0 = 1e-5, the pressure of fig5_coarse.sweep and fig5_late.sweep."""
+"""Runs of both codes from the same state for the comparisons with the published code
+(low_bending.py and low_beta.py for Fig 5, high_lambda.py for Fig 4): tissue_N16.data with a
+figure's parameter file and its base set (theta0_min -3 pi/20 in both) at the pressure of that
+figure's sweeps."""
 import argparse
 import csv
 import os
+import re
 import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
-PARAMETERS = os.path.join(ROOT, "potentials", "fig5.mesophyll")
-P0 = "1e-5"
+# each figure's parameter file and the pressure its sweeps run at
+FIGURES = {"fig5": ("fig5.mesophyll", "1e-5"),    # fig5_coarse.sweep and fig5_late.sweep
+           "fig4": ("fig4.mesophyll", "1e-6")}    # fig4.sweep (the caption's pressure)
 THETA0_MIN_ARG = "0.3"    # the driver multiplies it by -pi/2: theta0_min = -3 pi/20
 # the package's two ways to run: with the driver's cycle, and as the sweeps run it (its defaults)
 PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var",
@@ -53,27 +56,30 @@ def run_once(command, record, complete, resume, **kw):
         f.write(line)
 
 
-def published(binary, lmp, work, folder, seed, run_options, resume=False):
-    """Run the driver (run.py) into work/folder with Fig 5's theta0_min and P0 and the given
+def published(binary, lmp, work, folder, seed, run_options, resume=False, figure="fig5"):
+    """Run the driver (run.py) into work/folder with the figure's theta0_min and P0 and the given
     run.py options; return the rows of its CSV (run.py writes it once the run is measured)."""
     out = os.path.join(work, folder + ".csv")
     command = [sys.executable, os.path.join(HERE, "run.py"), binary,
                os.path.join(work, "tissue_N16.input"), seed, out, "--work",
                os.path.join(work, folder), "--lmp", lmp, "--data", TISSUE,
-               "--set", f"t0_min={THETA0_MIN_ARG}", "--set", f"P0={P0}"] + run_options
+               "--set", f"t0_min={THETA0_MIN_ARG}", "--set",
+               f"P0={FIGURES[figure][1]}"] + run_options
     run_once(command, out + ".command", lambda: os.path.exists(out), resume,
              stdout=subprocess.DEVNULL)
     return list(csv.DictReader(open(out)))
 
 
-def package(lmp, work, folder, mode, variables, resume=False):
-    """Run in.mesophyll in work/folder with Fig 5's base set at P0, ftol 1e-11, no restart
-    files, the mode's variables and the given ones ({name: value}); return the folder."""
+def package(lmp, work, folder, mode, variables, resume=False, figure="fig5"):
+    """Run in.mesophyll in work/folder with the figure's base set at its P0, ftol 1e-11, no
+    restart files, the mode's variables and the given ones ({name: value}); return the folder."""
+    parameters, p0 = FIGURES[figure]
     folder = os.path.join(work, folder)
     os.makedirs(folder, exist_ok=True)
     command = [lmp, "-in", os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll"),
-               "-var", "N", "16", "-var", "tissue", TISSUE, "-var", "parameters", PARAMETERS,
-               "-var", "set", "base", "-var", "P0", P0, "-var", "ftol", "1e-11"]
+               "-var", "N", "16", "-var", "tissue", TISSUE, "-var", "parameters",
+               os.path.join(ROOT, "potentials", parameters), "-var", "set", "base", "-var", "P0",
+               p0, "-var", "ftol", "1e-11"]
     for name, value in variables.items():
         command += ["-var", name, value]
     command += ["-var", "restart_every", "0", "-log", "log.lammps", "-screen", "none"] + \
@@ -83,6 +89,55 @@ def package(lmp, work, folder, mode, variables, resume=False):
              lambda: os.path.exists(log) and "Total wall time:" in open(log).read(), resume,
              cwd=folder)
     return folder
+
+
+# fix dpoly/check's count of overlapping cell outlines, and in.mesophyll's line after minimum 2
+PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate \(first: cells (\d+) and (\d+)\)")
+PROGRESS = re.compile(r"^growth step 2/2: .* phi_patch (\S+) <calA> (\S+) <z> (\S+)")
+
+
+def pairs_in(line):
+    """(count, 'a-b') of fix dpoly/check's line, (0, '') where it names none."""
+    m = PAIRS.search(line or "")
+    return (int(m.group(1)), f"{m.group(2)}-{m.group(3)}") if m else (0, "")
+
+
+def published_first_step(binary, lmp, work, folder, driver_settings, figure="fig5"):
+    """The driver's frame 1 (run.py --steps 1: the relaxed input grown once and minimized at P0;
+    no bond breaks before it, so the seed does not matter), measured by in.measure: [phi_patch,
+    calA, z, interpenetrating pairs, first pair]. driver_settings: run.py's --set NAME=VALUE."""
+    options = ["--steps", "1"]
+    for setting in driver_settings:
+        options += ["--set", setting]
+    rows = published(binary, lmp, work, folder, "20261122", options, figure=figure)
+    frame = next(r for r in rows if r["growth_steps"] == "1")
+    # in.measure's fix dpoly/check lines, one per frame: the last is frame 1's
+    checks = [line for line in open(os.path.join(work, folder, "log.measure"))
+              if line.startswith("fix dpoly/check:")]
+    count, first = pairs_in(checks[-1])
+    if count != int(frame["interpenetrating_pairs"]):
+        sys.exit(f"{work}/{folder}: the check line and the CSV disagree on the pairs")
+    return [frame["phi_patch"], frame["calA"], frame["z"], count, first]
+
+
+def package_first_step(lmp, work, folder, mode, variables, figure="fig5"):
+    """in.mesophyll's minimum 2, the first after a growth step (-var steps 2), in the mode with
+    the given variables: [phi_patch, calA, z, interpenetrating pairs, first pair]."""
+    folder = package(lmp, work, folder, mode, dict(variables, steps="2"), figure=figure)
+    log = open(os.path.join(folder, "log.lammps")).read().splitlines()
+    state = next(PROGRESS.match(line).groups() for line in log if PROGRESS.match(line))
+    check = next(line for line in log if line.startswith("fix dpoly/check: minimum 2 "))
+    return list(state) + list(pairs_in(check))
+
+
+def print_first_steps(name, rows):
+    """The table of published_first_step() and package_first_step() rows, each [value of name,
+    code, phi_patch, calA, z, pairs, first pair]."""
+    width = max(len(c) for c in PACKAGE_MODES)
+    print(f"{name:6} {'code':{width}} phi_patch calA   z     pairs (first)")
+    for r in rows:
+        print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
+              f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
 
 
 def write_csv(path, columns, rows):
