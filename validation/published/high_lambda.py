@@ -20,36 +20,20 @@ lambda each value of LAMBDAS:
 Each row gives phi_patch, calA and z of that state and the pairs of cells whose outlines
 overlap as fix dpoly/check counts them (and the first pair it names).
 """
-import os
-
 import same_tissue
 
 LAMBDAS = ("3", "5", "7", "10")
 DELTA_A = "0.5"
-COLUMNS = ["lambda", "code", "phi_patch", "calA", "z", "interpenetrating_pairs", "first_pair"]
 # what each package mode adds to the run's variables (same_tissue.package sets ftol 1e-11 for all)
 SWEEP_SETTINGS = {"package_published_rules": {},
                   "package_sweep": {"tmaxadapt": "yes", "seed": "1"}}
 
 
 def main():
-    p = same_tissue.arguments(__doc__, "high_lambda")
-    a = p.parse_args()
-    lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
-    same_tissue.driver_input(a.work)
-    rows = []
-    for lam in LAMBDAS:
-        rows.append([lam, "published"] + same_tissue.published_first_step(
-            binary, lmp, a.work, f"published_{lam}", [f"dl0={lam}", f"da0={DELTA_A}"],
-            figure="fig4"))
-        for mode in same_tissue.PACKAGE_MODES:
-            variables = dict(SWEEP_SETTINGS[mode], **{"lambda": lam, "delta_a": DELTA_A})
-            rows.append([lam, mode] + same_tissue.package_first_step(
-                lmp, a.work, f"{mode}_{lam}", mode, variables, figure="fig4"))
-        print(f"lambda {lam}: done", flush=True)
-    same_tissue.write_csv(a.out, COLUMNS, rows)
-    same_tissue.print_first_steps("lambda", rows)
-    print(f"wrote {a.out}")
+    same_tissue.compare_first_steps(
+        __doc__, "high_lambda", "lambda", LAMBDAS, lambda lam: [f"dl0={lam}", f"da0={DELTA_A}"],
+        lambda lam, mode: dict(SWEEP_SETTINGS[mode], **{"lambda": lam, "delta_a": DELTA_A}),
+        figure="fig4")
 
 
 if __name__ == "__main__":

@@ -19,30 +19,15 @@ eps_b each value of EPS_B:
 Each row gives phi_patch, calA and z of that state and the pairs of cells whose outlines
 overlap as fix dpoly/check counts them (and the first pair it names).
 """
-import os
-
 import same_tissue
 
 EPS_B = ("0.01", "0.03", "0.1", "0.4", "0.6")
-COLUMNS = ["eps_b", "code", "phi_patch", "calA", "z", "interpenetrating_pairs", "first_pair"]
 
 
 def main():
-    p = same_tissue.arguments(__doc__, "low_bending")
-    a = p.parse_args()
-    lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
-    same_tissue.driver_input(a.work)
-    rows = []
-    for eps_b in EPS_B:
-        rows.append([eps_b, "published"] + same_tissue.published_first_step(
-            binary, lmp, a.work, f"published_{eps_b}", [f"kb0={eps_b}"]))
-        for mode in same_tissue.PACKAGE_MODES:
-            rows.append([eps_b, mode] + same_tissue.package_first_step(
-                lmp, a.work, f"{mode}_{eps_b}", mode, {"eps_b": eps_b}))
-        print(f"eps_b {eps_b}: done", flush=True)
-    same_tissue.write_csv(a.out, COLUMNS, rows)
-    same_tissue.print_first_steps("eps_b", rows)
-    print(f"wrote {a.out}")
+    same_tissue.compare_first_steps(__doc__, "low_bending", "eps_b", EPS_B,
+                                    lambda eps_b: [f"kb0={eps_b}"],
+                                    lambda eps_b, mode: {"eps_b": eps_b})
 
 
 if __name__ == "__main__":

@@ -130,14 +130,31 @@ def package_first_step(lmp, work, folder, mode, variables, figure="fig5"):
     return list(state) + list(pairs_in(check))
 
 
-def print_first_steps(name, rows):
-    """The table of published_first_step() and package_first_step() rows, each [value of name,
-    code, phi_patch, calA, z, pairs, first pair]."""
+def compare_first_steps(doc, name, label, values, driver_settings, package_variables,
+                        figure="fig5"):
+    """The main() of a first-step comparison (low_bending.py, high_lambda.py): for each value of
+    the parameter label, the driver's frame 1 with driver_settings(value) (run.py --set items)
+    and the package's minimum 2 in each mode with package_variables(value, mode) (in.mesophyll
+    variables); writes the CSV --out and prints the table."""
+    a = arguments(doc, name).parse_args()
+    lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
+    driver_input(a.work)
+    rows = []
+    for value in values:
+        rows.append([value, "published"] + published_first_step(
+            binary, lmp, a.work, f"published_{value}", driver_settings(value), figure))
+        for mode in PACKAGE_MODES:
+            rows.append([value, mode] + package_first_step(
+                lmp, a.work, f"{mode}_{value}", mode, package_variables(value, mode), figure))
+        print(f"{label} {value}: done", flush=True)
+    write_csv(a.out, [label, "code", "phi_patch", "calA", "z", "interpenetrating_pairs",
+                      "first_pair"], rows)
     width = max(len(c) for c in PACKAGE_MODES)
-    print(f"{name:6} {'code':{width}} phi_patch calA   z     pairs (first)")
+    print(f"{label:6} {'code':{width}} phi_patch calA   z     pairs (first)")
     for r in rows:
         print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
               f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
+    print(f"wrote {a.out}")
 
 
 def write_csv(path, columns, rows):
