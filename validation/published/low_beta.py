@@ -40,7 +40,6 @@ PHI_STOP, STEPS = "0.3", "40"
 COLUMNS = ["beta", "code", "seed", "states", "phi_patch_end", "delta_phi_plus", "rises",
            "largest_rise", "states_interpenetrating", "first_interpenetrating_state",
            "seconds", "phi_patch_per_state"]
-PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate")
 CHECK = re.compile(r"^fix dpoly/check: minimum (\d+) ")
 LOOP = re.compile(r"^Loop time of (\S+)")
 
@@ -77,8 +76,7 @@ def package(lmp, work, beta, seed, mode, resume):
         if LOOP.match(line):
             seconds += float(LOOP.match(line).group(1))
         if m:
-            found = PAIRS.search(line)
-            pairs[int(m.group(1))] = int(found.group(1)) if found else 0
+            pairs[int(m.group(1))] = same_tissue.pairs_in(line)[0]
     if sorted(pairs) != list(range(1, len(phi) + 1)):
         sys.exit(f"{folder}: fix dpoly/check checked minima {sorted(pairs)}, the growth table "
                  f"has {len(phi)}")

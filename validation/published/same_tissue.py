@@ -91,15 +91,21 @@ def package(lmp, work, folder, mode, variables, resume=False, figure="fig5"):
     return folder
 
 
-# fix dpoly/check's count of overlapping cell outlines, and in.mesophyll's line after minimum 2
-PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate \(first: cells (\d+) and (\d+)\)")
+# fix dpoly/check's count of overlapping cell outlines with the first pair it names (two cells,
+# or a cell and its own periodic image), and in.mesophyll's line after minimum 2
+PAIRS = re.compile(r"(\d+) pairs of cells interpenetrate "
+                   r"\(first: (?:cells (\d+) and (\d+)|cell (\d+) and its periodic image)\)")
 PROGRESS = re.compile(r"^growth step 2/2: .* phi_patch (\S+) <calA> (\S+) <z> (\S+)")
 
 
 def pairs_in(line):
-    """(count, 'a-b') of fix dpoly/check's line, (0, '') where it names none."""
+    """(count, 'a-b') of fix dpoly/check's line ('a-image' for a cell and its periodic image),
+    (0, '') where it names none."""
     m = PAIRS.search(line or "")
-    return (int(m.group(1)), f"{m.group(2)}-{m.group(3)}") if m else (0, "")
+    if not m:
+        return 0, ""
+    first = f"{m.group(2)}-{m.group(3)}" if m.group(2) else f"{m.group(4)}-image"
+    return int(m.group(1)), first
 
 
 def published_first_step(binary, lmp, work, folder, driver_settings, figure="fig5"):
