@@ -1,7 +1,7 @@
 """Runs of both codes from the same state for the comparisons with the published code
-(low_bending.py and low_beta.py for Fig 5, high_lambda.py for Fig 4): tissue_N16.data with a
-figure's parameter file and its base set (theta0_min -3 pi/20 in both) at the pressure of that
-figure's sweeps."""
+(low_bending.py and low_beta.py for Fig 5, high_lambda.py and growth_per_step.py for Fig 4):
+tissue_N16.data with a figure's parameter file and its base set (theta0_min -3 pi/20 in both) at
+the pressure of that figure's sweeps."""
 import argparse
 import csv
 import os
@@ -23,7 +23,7 @@ PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var
 
 
 def arguments(doc, name):
-    """The options both comparisons take: the driver, lmp, the work folder, the CSV."""
+    """The options every comparison takes: the driver, lmp, the work folder, the CSV."""
     p = argparse.ArgumentParser(description=" ".join(doc.split("\n\n")[0].split()))
     p.add_argument("binary", help="the driver build.sh made")
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
@@ -138,10 +138,10 @@ def package_first_step(lmp, work, folder, mode, variables, figure="fig5"):
 
 def compare_first_steps(doc, name, label, values, driver_settings, package_variables,
                         figure="fig5"):
-    """The main() of a first-step comparison (low_bending.py, high_lambda.py): for each value of
-    the parameter label, the driver's frame 1 with driver_settings(value) (run.py --set items)
-    and the package's minimum 2 in each mode with package_variables(value, mode) (in.mesophyll
-    variables); writes the CSV --out and prints the table."""
+    """The main() of a first-step comparison (low_bending.py, high_lambda.py, growth_per_step.py):
+    for each value of the parameter label, the driver's frame 1 with driver_settings(value)
+    (run.py --set items) and the package's minimum 2 in each mode with package_variables(value,
+    mode) (in.mesophyll variables); writes the CSV --out and prints the table."""
     a = arguments(doc, name).parse_args()
     lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
     driver_input(a.work)
@@ -156,9 +156,10 @@ def compare_first_steps(doc, name, label, values, driver_settings, package_varia
     write_csv(a.out, [label, "code", "phi_patch", "calA", "z", "interpenetrating_pairs",
                       "first_pair"], rows)
     width = max(len(c) for c in PACKAGE_MODES)
-    print(f"{label:6} {'code':{width}} phi_patch calA   z     pairs (first)")
+    first = max([len(label)] + [len(v) for v in values])
+    print(f"{label:{first}} {'code':{width}} phi_patch calA   z     pairs (first)")
     for r in rows:
-        print(f"{r[0]:6} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
+        print(f"{r[0]:{first}} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
               f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
     print(f"wrote {a.out}")
 
