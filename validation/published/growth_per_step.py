@@ -51,11 +51,10 @@ def seed_spread(args):
 
 
 def main():
-    same_tissue.compare_first_steps(
+    seed_spread(same_tissue.compare_first_steps(
         __doc__, "growth_per_step", "lambda_x_delta_a", POINTS,
         lambda p: [f"dl0={POINTS[p][0]}", f"da0={POINTS[p][1]}"], package_variables,
-        figure="fig4")
-    seed_spread(same_tissue.arguments(__doc__, "growth_per_step").parse_args())
+        figure="fig4"))
 
 
 if __name__ == "__main__":

@@ -141,7 +141,8 @@ def compare_first_steps(doc, name, label, values, driver_settings, package_varia
     """The main() of a first-step comparison (low_bending.py, high_lambda.py, growth_per_step.py):
     for each value of the parameter label, the driver's frame 1 with driver_settings(value)
     (run.py --set items) and the package's minimum 2 in each mode with package_variables(value,
-    mode) (in.mesophyll variables); writes the CSV --out and prints the table."""
+    mode) (in.mesophyll variables); writes the CSV --out, prints the table and returns the
+    parsed options."""
     a = arguments(doc, name).parse_args()
     lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
     driver_input(a.work)
@@ -162,6 +163,7 @@ def compare_first_steps(doc, name, label, values, driver_settings, package_varia
         print(f"{r[0]:{first}} {r[1]:{width}} {float(r[2]):.4f}    {float(r[3]):.4f} "
               f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
     print(f"wrote {a.out}")
+    return a
 
 
 def write_csv(path, columns, rows):
