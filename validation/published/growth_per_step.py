@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Interpenetrating cells after the first growth step across lambda delta_a: the published code
 against the package, from the same tissue, between the products where every run of Fig 4's
-sweeps passes (2.5 and below) and where nearly every one fails (3.5 and above).
+sweeps passes (2.5 and below) and where nearly every one fails (3.5 and above); then the package
+alone at the sweeps' five seeds from two tissues, with how far the first growth stretches the
+rings' preferred segment lengths.
 
     growth_per_step.py BINARY [--lmp build/lmp] [--work DIR] [--out growth_per_step.csv]
 
@@ -11,42 +13,70 @@ package's minimum 2 with the driver's cycle and with fig4.sweep's protocol at se
 base set at P0 = 1e-6 from tissue_N16.data) at the points of POINTS, named lambda x delta_a:
 products 2.75 to 3.25 along delta_a 0.5, the product 3 reached four ways, and (5, 0.75), where
 1 of the sweeps' 5 runs fails. Then the package's minimum 2 with fig4.sweep's protocol at the
-sweep's other seeds, SEEDS, into growth_per_step_seeds.csv beside --out: bonds break after
-minimum 1, so minimum 2 depends on the seed.
+sweeps' five seeds (bonds break after minimum 1, so minimum 2 depends on the seed), at POINTS and
+at ANCHORS (grid points whose sweeps all pass or all fail), from each tissue of TISSUES, into
+growth_per_step_seeds.csv beside --out, with the largest ratio of a segment's preferred length
+to the mean diameter of its two vertices as minimum 2 starts.
 """
 import os
+import sys
 
 import same_tissue
 from high_lambda import SWEEP_SETTINGS    # the same package modes as high_lambda.py
 
+sys.path.insert(0, os.path.join(same_tissue.ROOT, "tools"))
+from mesophyll_frames import read_frames  # noqa: E402
+
 POINTS = {"5.5x0.5": ("5.5", "0.5"), "6x0.5": ("6", "0.5"), "6.5x0.5": ("6.5", "0.5"),
           "4x0.75": ("4", "0.75"), "5x0.6": ("5", "0.6"), "10x0.3": ("10", "0.3"),
           "5x0.75": ("5", "0.75")}
-SEEDS = ("2", "3", "4", "5")
+ANCHORS = {"10x0.1": ("10", "0.1"), "5x0.5": ("5", "0.5"), "7x0.5": ("7", "0.5"),
+           "7x0.75": ("7", "0.75"), "10x0.5": ("10", "0.5")}
+SEEDS = ("1", "2", "3", "4", "5")
+# the sweeps' tissue (fig4.sweep) and a second one, its Voronoi counterpart of 16 cells
+TISSUES = {"tissue_N16": same_tissue.TISSUE,
+           "voronoi_N16": os.path.join(same_tissue.ROOT, "examples", "tissue", "voronoi_N16.data")}
 
 
 def package_variables(point, mode, seed=None):
-    lam, delta_a = POINTS[point]
+    lam, delta_a = POINTS[point] if point in POINTS else ANCHORS[point]
     variables = dict(SWEEP_SETTINGS[mode], **{"lambda": lam, "delta_a": delta_a})
     if seed:
         variables["seed"] = seed
     return variables
 
 
+def largest_stretch(folder):
+    """max over segments of l0 / ((sigma_i + sigma_j)/2) as minimum 2 starts: in.mesophyll's
+    first dump frame holds minimum 1's positions with the state after its break, refine and the
+    first growth. Above 2 a segment at its preferred length leaves a gap between its two disks
+    wider than a vertex diameter."""
+    frame = next(read_frames(os.path.join(folder, "cells.N16.dump")))
+    sigma, l0 = frame.columns["d_sigma"], frame.columns["d_l0"]
+    # l0 of a vertex belongs to the segment to its next vertex (c_vertex[3])
+    nxt = [frame.row_of[int(i)] for i in frame.columns["c_vertex[3]"]]
+    return max(l0[i] / (0.5 * (sigma[i] + sigma[j])) for i, j in enumerate(nxt))
+
+
 def seed_spread(args):
-    """fig4.sweep's protocol at SEEDS: one row per point and seed."""
+    """fig4.sweep's protocol at SEEDS from each tissue: one row per tissue, point and seed."""
     lmp = os.path.abspath(args.lmp)
     rows = []
-    for point in POINTS:
-        for seed in SEEDS:
-            rows.append([point, seed] + same_tissue.package_first_step(
-                lmp, args.work, f"package_sweep_{point}_seed{seed}", "package_sweep",
-                package_variables(point, "package_sweep", seed), figure="fig4"))
-        print(f"{point} seeds {' '.join(SEEDS)}: pairs {[r[5] for r in rows[-len(SEEDS):]]}",
-              flush=True)
+    for tissue, path in TISSUES.items():
+        for point in list(POINTS) + list(ANCHORS):
+            for seed in SEEDS:
+                folder = f"package_sweep_{tissue}_{point}_seed{seed}"
+                state = same_tissue.package_first_step(
+                    lmp, args.work, folder, "package_sweep",
+                    package_variables(point, "package_sweep", seed), figure="fig4", tissue=path)
+                stretch = largest_stretch(os.path.join(args.work, folder))
+                rows.append([tissue, point, seed] + state[:3] + [f"{stretch:.4f}"] + state[3:])
+            print(f"{tissue} {point} seeds {' '.join(SEEDS)}: pairs "
+                  f"{[r[-2] for r in rows[-len(SEEDS):]]}", flush=True)
     out = os.path.join(os.path.dirname(os.path.abspath(args.out)), "growth_per_step_seeds.csv")
-    same_tissue.write_csv(out, ["lambda_x_delta_a", "seed", "phi_patch", "calA", "z",
-                                "interpenetrating_pairs", "first_pair"], rows)
+    same_tissue.write_csv(out, ["tissue", "lambda_x_delta_a", "seed", "phi_patch", "calA", "z",
+                                "largest_l0_over_sigma", "interpenetrating_pairs", "first_pair"],
+                          rows)
     print(f"wrote {out}")
 
 

@@ -70,14 +70,15 @@ def published(binary, lmp, work, folder, seed, run_options, resume=False, figure
     return list(csv.DictReader(open(out)))
 
 
-def package(lmp, work, folder, mode, variables, resume=False, figure="fig5"):
-    """Run in.mesophyll in work/folder with the figure's base set at its P0, ftol 1e-11, no
-    restart files, the mode's variables and the given ones ({name: value}); return the folder."""
+def package(lmp, work, folder, mode, variables, resume=False, figure="fig5", tissue=TISSUE):
+    """Run in.mesophyll in work/folder from tissue (16 cells) with the figure's base set at its
+    P0, ftol 1e-11, no restart files, the mode's variables and the given ones ({name: value});
+    return the folder."""
     parameters, p0 = FIGURES[figure]
     folder = os.path.join(work, folder)
     os.makedirs(folder, exist_ok=True)
     command = [lmp, "-in", os.path.join(ROOT, "examples", "mesophyll", "in.mesophyll"),
-               "-var", "N", "16", "-var", "tissue", TISSUE, "-var", "parameters",
+               "-var", "N", "16", "-var", "tissue", tissue, "-var", "parameters",
                os.path.join(ROOT, "potentials", parameters), "-var", "set", "base", "-var", "P0",
                p0, "-var", "ftol", "1e-11"]
     for name, value in variables.items():
@@ -126,10 +127,11 @@ def published_first_step(binary, lmp, work, folder, driver_settings, figure="fig
     return [frame["phi_patch"], frame["calA"], frame["z"], count, first]
 
 
-def package_first_step(lmp, work, folder, mode, variables, figure="fig5"):
+def package_first_step(lmp, work, folder, mode, variables, figure="fig5", tissue=TISSUE):
     """in.mesophyll's minimum 2, the first after a growth step (-var steps 2), in the mode with
     the given variables: [phi_patch, calA, z, interpenetrating pairs, first pair]."""
-    folder = package(lmp, work, folder, mode, dict(variables, steps="2"), figure=figure)
+    folder = package(lmp, work, folder, mode, dict(variables, steps="2"), figure=figure,
+                     tissue=tissue)
     log = open(os.path.join(folder, "log.lammps")).read().splitlines()
     state = next(PROGRESS.match(line).groups() for line in log if PROGRESS.match(line))
     check = next(line for line in log if line.startswith("fix dpoly/check: minimum 2 "))
