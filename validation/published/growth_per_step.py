@@ -16,7 +16,8 @@ products 2.75 to 3.25 along delta_a 0.5, the product 3 reached four ways, and (5
 sweeps' five seeds (bonds break after minimum 1, so minimum 2 depends on the seed), at POINTS and
 at ANCHORS (grid points whose sweeps all pass or all fail), from each tissue of TISSUES, into
 growth_per_step_seeds.csv beside --out, with the largest ratio of a segment's preferred length
-to the mean diameter of its two vertices as minimum 2 starts.
+to the mean diameter of its two vertices as minimum 2 starts and, where cells interpenetrate, the
+rank by that ratio (1: the most stretched cell) of the more stretched cell of the first pair.
 """
 import os
 import sys
@@ -46,16 +47,29 @@ def package_variables(point, mode, seed=None):
     return variables
 
 
-def largest_stretch(folder):
-    """max over segments of l0 / ((sigma_i + sigma_j)/2) as minimum 2 starts: in.mesophyll's
-    first dump frame holds minimum 1's positions with the state after its break and the first
-    growth (refine inserts nothing before minimum 2). Above 2 a segment at its preferred length
-    leaves a gap between its two disks wider than a vertex diameter."""
+def stretch_by_cell(folder):
+    """{cell (molecule ID): max over its segments of l0 / ((sigma_i + sigma_j)/2)} as minimum 2
+    starts: in.mesophyll's first dump frame holds minimum 1's positions with the state after its
+    break and the first growth (refine inserts nothing before minimum 2). Above 2 a segment at its
+    preferred length leaves a gap between its two disks wider than a vertex diameter."""
     frame = next(read_frames(os.path.join(folder, "cells.N16.dump")))
     sigma, l0 = frame.columns["d_sigma"], frame.columns["d_l0"]
+    stretch = {}
     # l0 of a vertex belongs to the segment to its next vertex (c_vertex[3])
-    nxt = [frame.row_of[int(i)] for i in frame.columns["c_vertex[3]"]]
-    return max(l0[i] / (0.5 * (sigma[i] + sigma[j])) for i, j in enumerate(nxt))
+    for i, next_id in enumerate(frame.columns["c_vertex[3]"]):
+        j = frame.row_of[int(next_id)]
+        cell = int(frame.mol[i])
+        stretch[cell] = max(stretch.get(cell, 0.0), l0[i] / (0.5 * (sigma[i] + sigma[j])))
+    return stretch
+
+
+def pair_rank(stretch, first_pair):
+    """Rank by stretch (1: the most stretched cell) of the more stretched cell of first_pair
+    ('a-b', or 'a-image' for a cell and its periodic image); '' where there is no pair."""
+    if not first_pair:
+        return ""
+    ranked = sorted(stretch, key=stretch.get, reverse=True)
+    return min(ranked.index(int(c)) + 1 for c in first_pair.split("-") if c != "image")
 
 
 def seed_spread(args):
@@ -69,13 +83,16 @@ def seed_spread(args):
                 state = same_tissue.package_first_step(
                     lmp, args.work, folder, "package_sweep",
                     package_variables(point, "package_sweep", seed), figure="fig4", tissue=path)
-                stretch = largest_stretch(os.path.join(args.work, folder))
-                rows.append([tissue, point, seed] + state[:3] + [f"{stretch:.4f}"] + state[3:])
+                stretch = stretch_by_cell(os.path.join(args.work, folder))
+                rows.append([tissue, point, seed] + state[:3] +
+                            [f"{max(stretch.values()):.4f}"] + state[3:] +
+                            [pair_rank(stretch, state[4])])
             print(f"{tissue} {point} seeds {' '.join(SEEDS)}: pairs "
-                  f"{[r[-2] for r in rows[-len(SEEDS):]]}", flush=True)
+                  f"{[r[7] for r in rows[-len(SEEDS):]]}", flush=True)
     out = os.path.join(os.path.dirname(os.path.abspath(args.out)), "growth_per_step_seeds.csv")
     same_tissue.write_csv(out, ["tissue", "lambda_x_delta_a", "seed", "phi_patch", "calA", "z",
-                                "largest_l0_over_sigma", "interpenetrating_pairs", "first_pair"],
+                                "largest_l0_over_sigma", "interpenetrating_pairs", "first_pair",
+                                "first_pair_stretch_rank"],
                           rows)
     print(f"wrote {out}")
 
