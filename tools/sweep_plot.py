@@ -3,10 +3,10 @@
 Figs 4-6.
 
     tools/sweep_plot.py heatmaps DIR --x lambda --y delta_a [--mark 1.5,0.1 ...] [-o PNG]
-        2 x 2 heatmaps over two grid axes (log axes, each grid point a tile between the
-        geometric midpoints to its neighbours) of the ensemble means of delta_A early and late,
-        delta_phi_plus and z near phi_patch = 0.5, on a log colour scale; --mark rings points
-        (x,y) such as the caption's highlighted ones.
+        2 x 2 heatmaps over two grid axes (one tile per grid value, evenly spaced, ticks at the
+        values) of the ensemble means of delta_A early and late, delta_phi_plus and z near
+        phi_patch = 0.5, on a log colour scale; --mark rings points (x,y) of the grid such as
+        the caption's highlighted ones.
     tools/sweep_plot.py curves DIR [--point LABEL ...] [--reference FILE] [-o PNG]
         mean calA against porosity 0.975 - phi_patch per grid point (default: every point), in
         porosity bins (--bin, default 0.025): each run's growth steps in a bin averaged, then
@@ -102,13 +102,19 @@ def count_label(ok, total, failed):
     return f"{ok}/{total}" + (f"\n{failed} failed" if failed else "")
 
 
-def tile_edges(values):
-    """Edges around sorted positive grid values: geometric midpoints, mirrored at the ends."""
-    v = np.log(np.asarray(values, float))
-    if len(v) == 1:
-        return np.exp([v[0] - 0.5, v[0] + 0.5])
-    mid = (v[1:] + v[:-1]) / 2
-    return np.exp(np.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]]))
+def tick_label(value):
+    return f"{value:g}"
+
+
+def tile_of(xs, ys, mark):
+    """(column, row) of the tile of a --mark 'x,y', or None (with a note) if it is off the grid."""
+    x, y = (float(v) for v in mark.split(","))
+    i = [k for k, v in enumerate(xs) if np.isclose(v, x)]
+    j = [k for k, v in enumerate(ys) if np.isclose(v, y)]
+    if not (i and j):
+        print(f"sweep_plot: marked point {mark} is not a point of the grid: not drawn")
+        return None
+    return i[0], j[0]
 
 
 def heatmaps(args, rows):
@@ -119,6 +125,7 @@ def heatmaps(args, rows):
     xs = sorted({number(r[args.x]) for r in rows if r[args.x]})
     ys = sorted({number(r[args.y]) for r in rows if r[args.y]})
     fig, axes = plt.subplots(2, 2, figsize=(10, 8.4), constrained_layout=True)
+    marked = [tile_of(xs, ys, mark) for mark in args.mark]
     table = []
     for ax, (quantity, title) in zip(axes.flat, QUANTITIES):
         stats = ensemble(rows, [args.x, args.y], quantity)
@@ -133,24 +140,26 @@ def heatmaps(args, rows):
         cmap = plt.get_cmap("viridis").copy()
         cmap.set_bad("lightgrey")
         ax.set_facecolor("lightgrey")
-        mesh = ax.pcolormesh(tile_edges(xs), tile_edges(ys), shown, norm=norm, cmap=cmap)
+        # one tile per grid value, evenly spaced: on a log axis the tiles of close values,
+        # 0.5 and 0.75, are too thin for their labels
+        mesh = ax.pcolormesh(np.arange(len(xs) + 1) - 0.5, np.arange(len(ys) + 1) - 0.5, shown,
+                             norm=norm, cmap=cmap)
         if positive.size:
             fig.colorbar(mesh, ax=ax)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
+        ax.set_xticks(range(len(xs)), [tick_label(x) for x in xs])
+        ax.set_yticks(range(len(ys)), [tick_label(y) for y in ys])
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.y)
         ax.set_title(title)
-        marked = [tuple(float(v) for v in mark.split(",")) for mark in args.mark]
-        for x, y in marked:
-            ax.plot(x, y, "o", mfc="none", mec="red", ms=12, mew=2)
+        for i, j in filter(None, marked):
+            ax.plot(i, j, "o", mfc="none", mec="red", ms=12, mew=2)
         for (x, y), counts in run_counts(rows, [args.x, args.y]).items():
-            if np.isfinite(x) and np.isfinite(y):
+            if x in xs and y in ys:
                 # in the middle of its tile; below the ring of a marked point
-                ring = any(np.isclose(x, mx) and np.isclose(y, my) for mx, my in marked)
-                ax.annotate(count_label(*counts), (x, y), ha="center", va="center",
-                            fontsize=7 if len(xs) <= 7 else 6,
-                            color="black", xytext=(0, -12 if ring else 0),
+                tile = (xs.index(x), ys.index(y))
+                ax.annotate(count_label(*counts), tile, ha="center", va="center",
+                            fontsize=7 if len(xs) <= 7 else 6, color="black",
+                            xytext=(0, -12 if tile in marked else 0),
                             textcoords="offset points")
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "
                  f"({excluded(rows)})\ngrey: no ok run or a value <= 0; "
