@@ -18,9 +18,10 @@ at ANCHORS (grid points whose sweeps all pass or all fail), from each tissue of 
 growth_per_step_seeds.csv beside --out, with the largest ratio of a segment's preferred length
 to the mean diameter of its two vertices as minimum 2 starts and, where cells interpenetrate, the
 rank by that ratio (1: the most stretched cell) of the more stretched cell of the first pair.
-Last, whole runs with fig4.sweep's protocol (its step cap and phi_stop 0.3) at WHOLE_RUNS, points
-where the seed decides whether minimum 2 has interpenetrating cells, into growth_per_step_runs.csv:
-whether the runs tangled at minimum 2 are the runs that fail, two at a time.
+Last, whole runs with fig4.sweep's protocol (its step cap and phi_stop) at WHOLE_RUNS, the points
+where the seed decides whether minimum 2 has interpenetrating cells on either tissue, into
+growth_per_step_runs.csv: whether the runs tangled at minimum 2 are the runs that fail, two at a
+time.
 """
 import concurrent.futures
 import math
@@ -33,6 +34,7 @@ from high_lambda import SWEEP_SETTINGS    # the same package modes as high_lambd
 sys.path.insert(0, os.path.join(same_tissue.ROOT, "tools"))
 from mesophyll_frames import read_frames  # noqa: E402
 from mesophyll_run import check_lines     # noqa: E402
+from sweep import SweepFile               # noqa: E402
 
 POINTS = {"5.5x0.5": ("5.5", "0.5"), "6x0.5": ("6", "0.5"), "6.5x0.5": ("6.5", "0.5"),
           "4x0.75": ("4", "0.75"), "5x0.6": ("5", "0.6"), "10x0.3": ("10", "0.3"),
@@ -43,11 +45,12 @@ SEEDS = ("1", "2", "3", "4", "5")
 # the sweeps' tissue (fig4.sweep) and a second one, its Voronoi counterpart of 16 cells
 TISSUES = {"tissue_N16": same_tissue.TISSUE,
            "voronoi_N16": os.path.join(same_tissue.ROOT, "examples", "tissue", "voronoi_N16.data")}
-# (tissue, point): run to the end at SEEDS; (5, 0.75) from tissue_N16 is fig4_part6's, a check
+# (tissue, point): run to the end at SEEDS; (5, 0.75) from tissue_N16 is fig4_part6's, a check,
+# and (7, 0.5) from it is fig4_part3's
 WHOLE_RUNS = [("tissue_N16", "5x0.75"), ("tissue_N16", "6.5x0.5"), ("tissue_N16", "10x0.3"),
               ("voronoi_N16", "5x0.75"), ("voronoi_N16", "6.5x0.5"), ("voronoi_N16", "7x0.5"),
               ("voronoi_N16", "10x0.3")]
-GROWTH = (20, 400)    # fig4.sweep's 'growth': the step cap is 20 / delta_a, at most 400
+FIG4 = SweepFile(os.path.join(same_tissue.ROOT, "examples", "sweep", "fig4.sweep"))
 
 
 def package_variables(point, mode, seed=None):
@@ -113,14 +116,19 @@ def whole_run(args, tissue, point, seed):
     at the end, minima checked, minima with interpenetrating cells, the first of them, other
     failed checks]."""
     delta_a = float(package_variables(point, "package_sweep")["delta_a"])
-    steps = min(math.ceil(GROWTH[0] / delta_a - 1e-9), GROWTH[1])
+    # the step cap as tools/sweep.py plans it from fig4.sweep's 'growth'
+    steps = math.ceil(FIG4.growth[0] / delta_a - 1e-9)
+    steps = min(steps, int(FIG4.growth[1] or steps))
     folder = same_tissue.package(
         os.path.abspath(args.lmp), args.work, f"whole_run_{tissue}_{point}_seed{seed}",
         "package_sweep", dict(package_variables(point, "package_sweep", seed), steps=str(steps),
-                              phi_stop="0.3"), figure="fig4", tissue=TISSUES[tissue])
+                              phi_stop=FIG4.fixed["phi_stop"]), figure="fig4",
+        tissue=TISSUES[tissue])
     checks = check_lines(open(os.path.join(folder, "log.lammps")).read())
     tangled = [c.minimum for c in checks if "cells interpenetrate" in c.problems]
-    others = [c for c in checks if c.failed and "cells interpenetrate" not in c.problems]
+    # checks that failed for anything besides interpenetrating cells
+    others = [c for c in checks if c.failed and any(
+        "cells interpenetrate" not in part for part in c.problems.split("; "))]
     growth = open(os.path.join(folder, "growth.N16.txt")).read().splitlines()[1:]
     names = open(os.path.join(folder, "growth.N16.txt")).readline().lstrip("#").split()
     phi_patch = growth[-1].split()[names.index("phi_patch")] if growth else ""
