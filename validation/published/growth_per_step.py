@@ -42,7 +42,7 @@ POINTS = {"5.5x0.5": ("5.5", "0.5"), "6x0.5": ("6", "0.5"), "6.5x0.5": ("6.5", "
 ANCHORS = {"10x0.1": ("10", "0.1"), "5x0.5": ("5", "0.5"), "7x0.5": ("7", "0.5"),
            "7x0.75": ("7", "0.75"), "10x0.5": ("10", "0.5")}
 SEEDS = ("1", "2", "3", "4", "5")
-# the sweeps' tissue (fig4.sweep) and a second one, its Voronoi counterpart of 16 cells
+# the sweeps' tissue (fig4.sweep) and a second one of 16 cells, made by tools/make_tissue.py
 TISSUES = {"tissue_N16": same_tissue.TISSUE,
            "voronoi_N16": os.path.join(same_tissue.ROOT, "examples", "tissue", "voronoi_N16.data")}
 # (tissue, point): run to the end at SEEDS; (5, 0.75) from tissue_N16 is fig4_part6's, a check,
