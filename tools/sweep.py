@@ -219,6 +219,13 @@ def point_label(point):
     return " ".join(f"{name}={value}" for name, value in point) or "base"
 
 
+def step_cap(growth, delta_a):
+    """The growth-step cap a sweep's 'growth A [MAX]' gives a run at delta_a: enough steps to
+    grow every cell's a0 by A, at most MAX."""
+    steps = math.ceil(growth[0] / delta_a - 1e-9)
+    return min(steps, growth[1] or steps)
+
+
 def planned_runs(sweep_file):
     """What a sweep file plans, without writing anything: (the SweepFile, the names a run may
     set, the runs in order). Each run is {id, point, point_values, tissue, seed, values}, values
@@ -265,8 +272,7 @@ def planned_runs(sweep_file):
                                                .get("delta_a", "nan")))
                     if not delta_a > 0:
                         sys.exit(f"{sweep.path}: 'growth' needs delta_a > 0, not {delta_a}")
-                    steps = math.ceil(sweep.growth[0] / delta_a - 1e-9)
-                    values["steps"] = str(min(steps, sweep.growth[1] or steps))
+                    values["steps"] = str(step_cap(sweep.growth, delta_a))
                 values.setdefault("set", sweep.set)
                 runs.append({"point": point_label(point), "point_values": dict(point),
                              "tissue": tissue, "seed": seed, "values": values})

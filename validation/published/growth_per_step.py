@@ -24,7 +24,6 @@ growth_per_step_runs.csv: whether the runs tangled at minimum 2 are the runs tha
 time.
 """
 import concurrent.futures
-import math
 import os
 import sys
 
@@ -33,8 +32,8 @@ from high_lambda import SWEEP_SETTINGS    # the same package modes as high_lambd
 
 sys.path.insert(0, os.path.join(same_tissue.ROOT, "tools"))
 from mesophyll_frames import read_frames  # noqa: E402
-from mesophyll_run import check_lines     # noqa: E402
-from sweep import SweepFile               # noqa: E402
+from mesophyll_run import check_lines, growth_table  # noqa: E402
+from sweep import SweepFile, step_cap     # noqa: E402
 
 POINTS = {"5.5x0.5": ("5.5", "0.5"), "6x0.5": ("6", "0.5"), "6.5x0.5": ("6.5", "0.5"),
           "4x0.75": ("4", "0.75"), "5x0.6": ("5", "0.6"), "10x0.3": ("10", "0.3"),
@@ -116,23 +115,26 @@ def whole_run(args, tissue, point, seed):
     at the end, minima checked, minima with interpenetrating cells, the first of them, other
     failed checks]."""
     delta_a = float(package_variables(point, "package_sweep")["delta_a"])
-    # the step cap as tools/sweep.py plans it from fig4.sweep's 'growth'
-    steps = math.ceil(FIG4.growth[0] / delta_a - 1e-9)
-    steps = min(steps, int(FIG4.growth[1] or steps))
     folder = same_tissue.package(
         os.path.abspath(args.lmp), args.work, f"whole_run_{tissue}_{point}_seed{seed}",
-        "package_sweep", dict(package_variables(point, "package_sweep", seed), steps=str(steps),
+        "package_sweep", dict(package_variables(point, "package_sweep", seed),
+                              steps=str(step_cap(FIG4.growth, delta_a)),
                               phi_stop=FIG4.fixed["phi_stop"]), figure="fig4",
         tissue=TISSUES[tissue])
+    return [tissue, point, seed] + whole_run_outcome(folder)
+
+
+def whole_run_outcome(folder):
+    """[growth steps, phi_patch at the end, minima checked, minima with interpenetrating cells,
+    the first of them, other failed checks] of a finished run's folder."""
     checks = check_lines(open(os.path.join(folder, "log.lammps")).read())
     tangled = [c.minimum for c in checks if "cells interpenetrate" in c.problems]
     # checks that failed for anything besides interpenetrating cells
     others = [c for c in checks if c.failed and any(
         "cells interpenetrate" not in part for part in c.problems.split("; "))]
-    growth = open(os.path.join(folder, "growth.N16.txt")).read().splitlines()[1:]
-    names = open(os.path.join(folder, "growth.N16.txt")).readline().lstrip("#").split()
-    phi_patch = growth[-1].split()[names.index("phi_patch")] if growth else ""
-    return [tissue, point, seed, len(growth), phi_patch, len(checks), len(tangled),
+    growth = growth_table(os.path.join(folder, "growth.N16.txt"))
+    phi_patch = f"{growth['phi_patch'][-1]:.6f}" if growth["step"] else ""  # in.mesophyll's %.6f
+    return [len(growth["step"]), phi_patch, len(checks), len(tangled),
             tangled[0] if tangled else "", len(others)]
 
 
