@@ -401,6 +401,58 @@ TEST(RefinePublished, DecidesBeforeGrowth)
     EXPECT_NEAR(grown[k] - (k < 16 ? 0.5 : 0.25) * l0, growth, 1e-12) << "vertex " << k + 1;
 }
 
+// measure preferred reads each segment's l0 where the rule sets read its length: in the relaxed
+// 16-gon (segments 0.238, at their l0) with diameters 0.16 (3 radii: 0.24) no segment is long
+// enough, until vertices 1, 5 and 9 get l0 0.3; then their segments to the next vertex split
+// (new vertices 17, 18 and 19 after them), before any minimization has stretched them, and the
+// halves take l0/2 (rules tension at l = l0). Measured by length, the same ring splits nothing.
+TEST(Refine, MeasurePreferredSplitsOnPreferredLengths)
+{
+  auto split_with = [](const std::string &measure) {
+    auto s = relaxed_ring("", 0.16);
+    s->run("group long id 1 5 9\nset group long d_l0 0.3\n"
+           "fix refine all dpoly/refine runs yes measure " +
+           measure + "\nrun 0 post no");
+    return s;
+  };
+  const double l0 = relaxed_ring("", 0.16)->gather("d_l0", 1)[0];
+  ASSERT_LT(l0, 0.24) << "no segment longer than 3 radii before l0 is set";
+  EXPECT_EQ(split_with("actual")->natoms(), 16);
+  auto preferred = split_with("preferred");
+  ASSERT_EQ(preferred->natoms(), 19);
+  const std::vector<int> ring = rings_of(*preferred).at(1);
+  const std::vector<double> l0s = preferred->gather("d_l0", 1);
+  for (size_t k = 0; k < ring.size(); k++) {
+    const int id = ring[k], next = ring[(k + 1) % ring.size()];
+    const bool split = id == 1 || id == 5 || id == 9;
+    if (split) EXPECT_EQ(next, 17 + (id - 1) / 4) << "the new vertex follows vertex " << id;
+    EXPECT_NEAR(l0s[id - 1], split || id > 16 ? 0.15 : l0, 1e-12) << "vertex " << id;
+  }
+}
+
+// measure preferred judges the segments by l0 and acts after growth unless told otherwise: the
+// relaxed 16-gon of diameters 0.16 (segments 0.238 < 3 radii 0.24) grows (l0 0.503, 3 radii
+// 0.294) and, judged by l0, splits every segment twice (48 vertices, the first piece l0/2)
+// before the minimum; judged by l0 before growth, or by length, it splits none.
+TEST(RefinePublished, MeasurePreferredSplitsGrownSegmentsAfterGrowth)
+{
+  auto step = [](const std::string &options) {
+    auto s = relaxed_ring(std::string(STIFFNESS), 0.16);
+    s->run("fix grow all mesophyll/grow delta_a 0.5 box fixed\n"
+           "fix refine all dpoly/refine rules published " +
+           options + "\nminimize 0.0 1.0e-13 10000 100000");
+    return s;
+  };
+  auto unrefined = step("");
+  ASSERT_EQ(unrefined->natoms(), 16);
+  const double grown = unrefined->gather("d_l0", 1)[0];
+  ASSERT_GT(grown, 1.5 * unrefined->gather("d_sigma", 1)[0]) << "grown l0 above 3 radii";
+  auto after = step("measure preferred");
+  ASSERT_EQ(after->natoms(), 48);
+  EXPECT_NEAR(after->gather("d_l0", 1)[0], 0.5 * grown, 1e-12);
+  EXPECT_EQ(step("measure preferred timing before_growth")->natoms(), 16);
+}
+
 // rules consistent on the same ring: the published candidates, each split once; halves take
 // half of l0 and d_kl; each vertex keeps B = kb lbar and kappa0 = theta0/lbar, lbar the mean l0
 // of its two segments; the new vertex takes the mean B and kappa0 of its neighbours.
@@ -605,6 +657,8 @@ TEST_F(BadRefine, SaysWhatIsWrong)
   EXPECT_THAT(error_of("fix r all dpoly/refine start 0"), HasSubstr("start must be >= 1, got 0"));
   EXPECT_THAT(error_of("fix r all dpoly/refine timing early"),
               HasSubstr("timing must be 'before_growth' or 'after_growth'"));
+  EXPECT_THAT(error_of("fix r all dpoly/refine measure l0"),
+              HasSubstr("measure must be 'actual' or 'preferred', got 'l0'"));
   EXPECT_THAT(error_of("fix r all dpoly/refine rules published"), HasSubstr("define d_kl with"));
   EXPECT_THAT(error_of("fix s all property/atom d_kl ghost yes\nset group all d_kl 1.0\n"
                        "fix r all dpoly/refine rules consistent"),

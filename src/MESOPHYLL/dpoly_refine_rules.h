@@ -28,14 +28,14 @@
 namespace LAMMPS_NS {
 namespace DPoly {
 
-  // What refinement reads of a vertex, measured by its owner at the minimum.
+  // What refinement reads of a vertex, measured by its owner where fix dpoly/refine acts.
   struct RefineVertex {
     tagint tag, cell;
     double diameter, preferred_length, preferred_angle;
     double segment_factor, bending_factor;    // d_kl and d_kb, 1 where they are not defined
     double type_bending;                      // eps_b of the vertex's angle type
     double turning_angle;                     // theta, from the previous to the next vertex
-    double length;                            // of the segment to the next vertex
+    double length;    // of the segment to the next vertex, or its l0 (measure preferred)
   };
 
   // The tissue as the rule sets see it: every vertex by ID, every cell's ring, adhesive bonds.

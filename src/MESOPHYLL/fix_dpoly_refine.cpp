@@ -26,7 +26,7 @@ using DPoly::SegmentSplit;
 
 FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
     FixDPolyStage(lmp, narg, arg, REFINE, 3), rules_name("tension"), steps(0), start(1),
-    added_total(0), added_last(0)
+    measure_preferred(false), added_total(0), added_last(0)
 {
   DPoly::RefineRules::Settings settings = {3.0, 5.0, true};
   bool void_given = false;
@@ -52,6 +52,8 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
       void_given = true;
     } else if (strcmp(key, "timing") == 0) {
       timing = one_of(key, value, "before_growth", "after_growth");
+    } else if (strcmp(key, "measure") == 0) {
+      measure_preferred = one_of(key, value, "actual", "preferred") == 1;
     } else if (strcmp(key, "start") == 0) {
       start = utils::bnumeric(FLERR, value, false, lmp);
       if (start < 1) error->all(FLERR, "Fix dpoly/refine start must be >= 1, got {}", value);
@@ -64,7 +66,8 @@ FixDPolyRefine::FixDPolyRefine(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix dpoly/refine void applies to rules tension; rules {} has its own candidates",
                rules_name);
-  if (timing < 0) timing = rules->before_growth() ? 0 : 1;
+  // segments judged by l0 are worth splitting right after growth has lengthened l0
+  if (timing < 0) timing = rules->before_growth() && !measure_preferred ? 0 : 1;
   move_to(timing == 0 ? REFINE_BEFORE_GROWTH : REFINE);
   if (!atom->molecule_flag || !atom->avec->bonds_allow || !atom->avec->angles_allow)
     error->all(FLERR, "Fix dpoly/refine needs an atom style with molecule IDs, bonds and angles");
@@ -127,9 +130,10 @@ int FixDPolyRefine::act()
 }
 
 /* ----------------------------------------------------------------------
-   every vertex of the cells as its owner measures it at the minimum (the segment to the next
-   vertex and the turning angle, from the closest images), the rings from the hub, and the
-   adhesive bonds if the rule set reads them: the same table on every rank
+   every vertex of the cells as its owner measures it (the segment to the next vertex and the
+   turning angle, from the closest images), the rings from the hub, and the adhesive bonds if the
+   rule set reads them: the same table on every rank. With measure preferred a segment's length
+   is its l0: after growth, the length the next minimum will stretch it towards
 ------------------------------------------------------------------------- */
 
 DPoly::RefineTable FixDPolyRefine::gather_table(std::vector<DPoly::AdhesiveBond> &bonds)
@@ -151,11 +155,13 @@ DPoly::RefineTable FixDPolyRefine::gather_table(std::vector<DPoly::AdhesiveBond>
     int angle_type = 0;
     for (int m = 0; m < atom->num_angle[i]; m++)
       if (atom->angle_atom2[i][m] == atom->tag[i]) angle_type = atom->angle_type[i][m];
-    mine.push_back(
-        {atom->tag[i], atom->molecule[i], state.diameter[i], state.preferred_length[i],
-         state.preferred_angle[i], state.segment_factor_of(i), state.bending_factor_of(i),
-         bending_types && angle_type > 0 ? bending_types[angle_type] : 1.0,
-         DPoly::turning_angle(in, out), std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1])});
+    const double distance = std::hypot(x[j][0] - x[i][0], x[j][1] - x[i][1]);
+    mine.push_back({atom->tag[i], atom->molecule[i], state.diameter[i],
+                    state.preferred_length[i], state.preferred_angle[i],
+                    state.segment_factor_of(i), state.bending_factor_of(i),
+                    bending_types && angle_type > 0 ? bending_types[angle_type] : 1.0,
+                    DPoly::turning_angle(in, out),
+                    measure_preferred ? state.preferred_length[i] : distance});
   }
   std::vector<DPoly::RefineVertex> all = DPoly::gather_on_all_ranks(std::move(mine), world);
   std::sort(all.begin(), all.end(), [](const DPoly::RefineVertex &a, const DPoly::RefineVertex &b) {

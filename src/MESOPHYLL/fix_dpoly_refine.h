@@ -45,6 +45,7 @@ class FixDPolyRefine : public FixDPolyStage {
   std::unique_ptr<DPoly::RefineRules> rules;
   bigint steps;          // refinement passes so far
   bigint start;          // the first pass that may add vertices
+  bool measure_preferred;    // segments measured by their preferred length l0, not their length
   bigint added_total;    // vertices added in all
   int added_last;
   std::map<tagint, int> initial_vertices;    // per cell, at the first refinement
