@@ -63,8 +63,10 @@ def package_variables(point, mode, seed=None):
 def stretch_by_cell(folder):
     """{cell (molecule ID): max over its segments of l0 / ((sigma_i + sigma_j)/2)} as minimum 2
     starts: in.mesophyll's first dump frame holds minimum 1's positions with the state after its
-    break and the first growth (refine inserts nothing before minimum 2). Above 2 a segment at its
-    preferred length leaves a gap between its two disks wider than a vertex diameter."""
+    break and the first growth (refine inserts nothing before minimum 2, but with -var
+    refine_measure preferred, refine_preferred.py's runs, it inserts after that growth). Above 2
+    a segment at its preferred length leaves a gap between its two disks wider than a vertex
+    diameter."""
     frame = next(read_frames(os.path.join(folder, "cells.N16.dump")))
     sigma, l0 = frame.columns["d_sigma"], frame.columns["d_l0"]
     stretch = {}
