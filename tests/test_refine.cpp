@@ -376,21 +376,29 @@ TEST(RefinePublished, CapIsForTheWholeTissueBeforeTheStep)
   EXPECT_EQ(s->natoms(), 48);
 }
 
+namespace {
+
+// The relaxed 16-gon with vertex diameter sigma, minimized again with growth (delta_a 0.5) and
+// rules published with the given options: refinement and growth act at the end of it.
+std::unique_ptr<LammpsSession> grown_and_refined(double sigma, const std::string &options)
+{
+  auto s = relaxed_ring(std::string(STIFFNESS), sigma);
+  s->run("fix grow all mesophyll/grow delta_a 0.5 box fixed\n"
+         "fix refine all dpoly/refine rules published " +
+         options + "\nminimize 0.0 1.0e-13 10000 100000");
+  return s;
+}
+
+}    // namespace
+
 // The published code inserts between breaking and the next growth, with the radii of the
 // minimum. A 16-gon whose segments (0.223) exceed 3 radii (0.21) before growth scales the
 // diameters by sqrt(1.5) (0.257 after) splits with timing before_growth, not after; and growth
 // then acts on the refined ring, so all 32 vertices grow alike.
 TEST(RefinePublished, DecidesBeforeGrowth)
 {
-  auto step = [](const std::string &timing) {
-    auto s = relaxed_ring(std::string(STIFFNESS), 0.14);
-    s->run("fix grow all mesophyll/grow delta_a 0.5 box fixed\n"
-           "fix refine all dpoly/refine rules published " +
-           timing + "\nminimize 0.0 1.0e-13 10000 100000");
-    return s;
-  };
   const double l0 = relaxed_ring("")->gather("d_l0", 1)[0];
-  auto before = step(""), after = step("timing after_growth");
+  auto before = grown_and_refined(0.14, ""), after = grown_and_refined(0.14, "timing after_growth");
   EXPECT_EQ(before->natoms(), 48);
   EXPECT_EQ(after->natoms(), 16);
   // pieces l0/2 (old vertices), l0/4 (new ones), each grown by the same amount
@@ -436,13 +444,7 @@ TEST(Refine, MeasurePreferredSplitsOnPreferredLengths)
 // before the minimum; judged by l0 before growth, or by length, it splits none.
 TEST(RefinePublished, MeasurePreferredSplitsGrownSegmentsAfterGrowth)
 {
-  auto step = [](const std::string &options) {
-    auto s = relaxed_ring(std::string(STIFFNESS), 0.16);
-    s->run("fix grow all mesophyll/grow delta_a 0.5 box fixed\n"
-           "fix refine all dpoly/refine rules published " +
-           options + "\nminimize 0.0 1.0e-13 10000 100000");
-    return s;
-  };
+  auto step = [](const std::string &options) { return grown_and_refined(0.16, options); };
   auto unrefined = step("");
   ASSERT_EQ(unrefined->natoms(), 16);
   const double grown = unrefined->gather("d_l0", 1)[0];
