@@ -52,8 +52,13 @@ WHOLE_RUNS = [("tissue_N16", "5x0.75"), ("tissue_N16", "6.5x0.5"), ("tissue_N16"
 FIG4 = SweepFile(os.path.join(same_tissue.ROOT, "examples", "sweep", "fig4.sweep"))
 
 
+def grid_point(point):
+    """(lambda, delta_a) of a point of POINTS or ANCHORS."""
+    return POINTS[point] if point in POINTS else ANCHORS[point]
+
+
 def package_variables(point, mode, seed=None):
-    lam, delta_a = POINTS[point] if point in POINTS else ANCHORS[point]
+    lam, delta_a = grid_point(point)
     variables = dict(SWEEP_SETTINGS[mode], **{"lambda": lam, "delta_a": delta_a})
     if seed:
         variables["seed"] = seed
@@ -112,17 +117,22 @@ def seed_spread(args):
     print(f"wrote {out}")
 
 
+def run_to_end(args, folder, tissue, lam, delta_a, seed, extra=None, resume=False):
+    """fig4.sweep's protocol to its end (its step cap and phi_stop) at (lam, delta_a) from
+    TISSUES[tissue] into args.work/folder, with the in.mesophyll variables extra; the folder."""
+    variables = dict(SWEEP_SETTINGS["package_sweep"], **{"lambda": lam, "delta_a": delta_a},
+                     seed=seed, steps=str(step_cap(FIG4.growth, float(delta_a))),
+                     phi_stop=FIG4.fixed["phi_stop"], **(extra or {}))
+    return same_tissue.package(os.path.abspath(args.lmp), args.work, folder, "package_sweep",
+                               variables, resume=resume, figure="fig4", tissue=TISSUES[tissue])
+
+
 def whole_run(args, tissue, point, seed):
     """One run of fig4.sweep's protocol to its end: [tissue, point, seed, growth steps, phi_patch
     at the end, minima checked, minima with interpenetrating cells, the first of them, other
     failed checks]."""
-    delta_a = float(package_variables(point, "package_sweep")["delta_a"])
-    folder = same_tissue.package(
-        os.path.abspath(args.lmp), args.work, f"whole_run_{tissue}_{point}_seed{seed}",
-        "package_sweep", dict(package_variables(point, "package_sweep", seed),
-                              steps=str(step_cap(FIG4.growth, delta_a)),
-                              phi_stop=FIG4.fixed["phi_stop"]), figure="fig4",
-        tissue=TISSUES[tissue])
+    folder = run_to_end(args, f"whole_run_{tissue}_{point}_seed{seed}", tissue,
+                        *grid_point(point), seed)
     return [tissue, point, seed] + whole_run_outcome(folder)
 
 

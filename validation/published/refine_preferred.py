@@ -30,12 +30,12 @@ import re
 import sys
 
 import same_tissue
-from growth_per_step import FIG4, SEEDS, TISSUES, stretch_by_cell, whole_run_outcome
+from growth_per_step import SEEDS, TISSUES, run_to_end, stretch_by_cell, whole_run_outcome
 
 sys.path.insert(0, os.path.join(same_tissue.ROOT, "tools"))
 from mesophyll_frames import read_frames  # noqa: E402
 from mesophyll_run import growth_table  # noqa: E402
-from sweep import DEFAULT_REFERENCE, delta_A, read_reference, step_cap  # noqa: E402
+from sweep import DEFAULT_REFERENCE, delta_A, read_reference  # noqa: E402
 
 POINTS = {"7x0.5": ("7", "0.5"), "10x0.5": ("10", "0.5"), "7x0.75": ("7", "0.75"),
           "10x0.75": ("10", "0.75"), "5x0.75": ("5", "0.75"), "5x0.5": ("5", "0.5")}
@@ -48,13 +48,8 @@ LOOP = re.compile(r"^Loop time of (\S+)", re.MULTILINE)
 
 
 def run(args, tissue, point, seed):
-    lam, delta_a = POINTS[point]
-    variables = {"lambda": lam, "delta_a": delta_a, "seed": seed, "tmaxadapt": "yes",
-                 "steps": str(step_cap(FIG4.growth, float(delta_a))),
-                 "phi_stop": FIG4.fixed["phi_stop"], "refine_measure": "preferred"}
-    folder = same_tissue.package(os.path.abspath(args.lmp), args.work,
-                                 f"refine_preferred_{tissue}_{point}_seed{seed}", "package_sweep",
-                                 variables, resume=True, figure="fig4", tissue=TISSUES[tissue])
+    folder = run_to_end(args, f"refine_preferred_{tissue}_{point}_seed{seed}", tissue,
+                        *POINTS[point], seed, extra={"refine_measure": "preferred"}, resume=True)
     growth = growth_table(os.path.join(folder, "growth.N16.txt"))
     frames = read_frames(os.path.join(folder, "cells.N16.dump"))
     first = next(frames)
