@@ -4,7 +4,7 @@ parameter set (or values given with --set) on one seed, and write its trajectory
 measured by the package itself.
 
     run.py BINARY INPUT SEED OUT.csv [--work DIR] [--phi-stop 0.45] [--steps K]
-           [--set NAME=VALUE ...] [--lmp build/lmp] [--measure-only]
+           [--limit SECONDS] [--set NAME=VALUE ...] [--lmp build/lmp] [--measure-only]
 
 INPUT is the file make_input.py wrote. The driver runs in DIR (default: next to OUT.csv,
 OUT.work/) and prints a frame (meso2D::printMesoNetworkCTCS2D) once after its initial
@@ -21,7 +21,9 @@ DIR without running the driver.
 The driver's arguments are the values of the `default` set of potentials/arabidopsis.mesophyll,
 mapped in ARGS below; README.md says why each is what it is. --set NAME=VALUE replaces one of
 them (e.g. --set kb0=0.01 for Fig 5's low bending stiffness); --steps K stops the driver after
-K growth steps (default: only --phi-stop).
+K growth steps (default: only --phi-stop); --limit stops it after that many seconds of wall time,
+also within a minimization (the driver's FIRE stops only after 5e8 iterations: a stall would run
+for days), and steps.txt then says so in its last line.
 """
 import argparse
 import csv
@@ -30,6 +32,7 @@ import os
 import re
 import subprocess
 import sys
+import threading
 import time
 
 import numpy as np
@@ -71,10 +74,11 @@ def last_frame(path):
     return last
 
 
-def run_driver(binary, inp, seed, work, phi_stop, max_steps=None):
+def run_driver(binary, inp, seed, work, phi_stop, max_steps=None, limit=None):
     """Run the driver in work/; return [(growth_steps, iterations, wall_s)] per printed frame.
     wall_s of a frame: seconds from the previous frame's minimum to this one's (break, insertion,
-    growth and the minimization; for frame 0 the start-up and the initial relaxation)."""
+    growth and the minimization; for frame 0 the start-up and the initial relaxation). limit:
+    seconds after which the driver is stopped wherever it is."""
     os.makedirs(work, exist_ok=True)
     pos = os.path.join(work, "pos.txt")
     command = [binary, os.path.abspath(inp)] + [repr(v) for v in ARGS.values()] + \
@@ -85,6 +89,16 @@ def run_driver(binary, inp, seed, work, phi_stop, max_steps=None):
     start = last = time.monotonic()
     proc = subprocess.Popen(["nice", "-n", "5"] + command, cwd=work, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, bufsize=1)
+    fired = threading.Event()
+
+    def stop():
+        if proc.poll() is None:
+            fired.set()
+            proc.terminate()
+
+    timer = threading.Timer(limit, stop) if limit else None
+    if timer:
+        timer.start()
     with open(os.path.join(work, "stdout.tail"), "w") as tail:
         for line in proc.stdout:
             now = time.monotonic()
@@ -109,9 +123,14 @@ def run_driver(binary, inp, seed, work, phi_stop, max_steps=None):
             if "ERROR" in line or "did not converge" in line:
                 tail.write(f"{now - start:.2f} {line}")
         proc.wait()
+    if timer:
+        timer.cancel()
     with open(os.path.join(work, "steps.txt"), "w") as f:
         f.write("# growth_steps iterations wall_s\n")
         f.writelines(f"{k} {i} {w:.3f}\n" for k, i, w in steps)
+        if fired.is_set():
+            f.write(f"# stopped at the --limit of {limit:g} s, {time.monotonic() - last:.1f} s "
+                    f"into the minimization after frame {steps[-1][0] if steps else 'none'}\n")
     return steps
 
 
@@ -146,6 +165,7 @@ def main():
     p.add_argument("--work")
     p.add_argument("--phi-stop", type=float, default=0.45)
     p.add_argument("--steps", type=int, help="stop after this many growth steps")
+    p.add_argument("--limit", type=float, help="stop the driver after this many seconds")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help=f"replace a driver argument ({', '.join(ARGS)})")
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
@@ -155,8 +175,11 @@ def main():
     a = p.parse_args()
     if a.steps is not None and a.steps < 1:
         p.error(f"--steps {a.steps}: give at least 1 growth step")
-    if a.measure_only and (a.set or a.steps is not None):
-        p.error("--measure-only measures frames already made: --set and --steps do not apply")
+    if a.limit is not None and a.limit <= 0:
+        p.error(f"--limit {a.limit:g}: give a positive number of seconds")
+    if a.measure_only and (a.set or a.steps is not None or a.limit is not None):
+        p.error("--measure-only measures frames already made: --set, --steps and --limit do "
+                "not apply")
     for item in a.set:
         name, _, value = item.partition("=")
         if name not in ARGS:
@@ -167,7 +190,8 @@ def main():
             p.error(f"--set {item}: {value!r} is not a number")
     work = a.work or os.path.splitext(a.out)[0] + ".work"
     if not a.measure_only:
-        run_driver(os.path.abspath(a.binary), a.input, a.seed, work, a.phi_stop, a.steps)
+        run_driver(os.path.abspath(a.binary), a.input, a.seed, work, a.phi_stop, a.steps,
+                   a.limit)
     with open(os.path.join(work, "steps.txt")) as f:
         steps = [[float(w) for w in line.split()] for line in f if not line.startswith("#")]
     tissues, rows, pairs = measure(os.path.abspath(a.lmp), work)

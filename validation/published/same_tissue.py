@@ -1,5 +1,6 @@
 """Runs of both codes from the same state for the comparisons with the published code
-(low_bending.py and low_beta.py for Fig 5, high_lambda.py and growth_per_step.py for Fig 4):
+(low_bending.py and low_beta.py for Fig 5, high_lambda.py and growth_per_step.py for Fig 4,
+high_pressure.py for Fig 6):
 tissue_N16.data with a figure's parameter file and its base set (theta0_min -3 pi/20 in both) at
 the pressure of that figure's sweeps."""
 import argparse
@@ -14,7 +15,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
 # each figure's parameter file and the pressure its sweeps run at
 FIGURES = {"fig5": ("fig5.mesophyll", "1e-5"),    # fig5_coarse.sweep and fig5_late.sweep
-           "fig4": ("fig4.mesophyll", "1e-6")}    # fig4.sweep (the caption's pressure)
+           "fig4": ("fig4.mesophyll", "1e-6"),    # fig4.sweep (the caption's pressure)
+           "fig6": ("fig6.mesophyll", "1e-1")}    # fig6.sweep's highest (high_pressure.py)
 THETA0_MIN_ARG = "0.3"    # the driver multiplies it by -pi/2: theta0_min = -3 pi/20
 # the package's two ways to run: with the driver's cycle, and as the sweeps run it (its defaults)
 PACKAGE_MODES = {"package_published_rules": ["-var", "rules", "published", "-var",
