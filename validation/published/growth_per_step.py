@@ -23,7 +23,6 @@ where the seed decides whether minimum 2 has interpenetrating cells on either ti
 growth_per_step_runs.csv: whether the runs tangled at minimum 2 are the runs that fail, two at a
 time.
 """
-import concurrent.futures
 import os
 import sys
 
@@ -153,8 +152,7 @@ def whole_run_outcome(folder):
 def whole_runs(args):
     """whole_run() at WHOLE_RUNS and SEEDS, two at a time, into growth_per_step_runs.csv."""
     jobs = [(tissue, point, seed) for tissue, point in WHOLE_RUNS for seed in SEEDS]
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        rows = list(pool.map(lambda job: whole_run(args, *job), jobs))
+    rows = same_tissue.run_all(2, lambda job: whole_run(args, *job), jobs)
     for tissue, point in WHOLE_RUNS:
         print(f"{tissue} {point} whole runs, minima with interpenetrating cells: "
               f"{[r[6] for r in rows if r[:2] == [tissue, point]]}", flush=True)

@@ -17,7 +17,6 @@ one at 0.001-0.02). The package's side is in doc/Howto_sweep.rst (Measured): fig
 protocol from this tissue at 1e-1, seed 1, stopped in its 33rd minimization with a cell longer
 than the box; from 32-cell tissues no run at 1e-1 was accepted.
 """
-import concurrent.futures
 import os
 
 import numpy as np
@@ -82,8 +81,8 @@ def main():
         p.error(f"--jobs must be at least 1 and --limit positive, got {a.jobs} and {a.limit:g}")
     lmp, binary = os.path.abspath(a.lmp), os.path.abspath(a.binary)
     same_tissue.driver_input(a.work)
-    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        results = list(pool.map(lambda s: run(binary, lmp, a.work, s, a.limit), a.seeds))
+    results = same_tissue.run_all(a.jobs, lambda s: run(binary, lmp, a.work, s, a.limit),
+                                  a.seeds)
     rows = [r for result in results for r in result]
     same_tissue.write_csv(a.out, COLUMNS, rows)
     print("seed step phi_patch calA  vertices iterations span/L (cell) shortest l/l0 (cell)")

@@ -28,7 +28,6 @@ the states in which fix dpoly/check finds cells whose outlines overlap (counted 
 first state: 1 is the first minimum after growth), and the run's seconds (the driver: the sum of
 its frames' wall_s; the package: LAMMPS's loop time).
 """
-import concurrent.futures
 import os
 import re
 import sys
@@ -132,13 +131,7 @@ def main():
         print(f"beta {beta} seed {seed} {code}: done", flush=True)
         return row(beta, code, seed, *result)
 
-    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        futures = [pool.submit(one, task) for task in tasks]
-        try:
-            rows = [future.result() for future in futures]
-        except BaseException:    # a failed run, or Ctrl-C: start no further run
-            pool.shutdown(wait=True, cancel_futures=True)
-            raise
+    rows = same_tissue.run_all(a.jobs, one, tasks)
     same_tissue.write_csv(a.out, COLUMNS, rows)
     width = max(len(c) for c in same_tissue.PACKAGE_MODES)
     print(f"{'beta':4} {'code':{width}} seed states phi_end dphi+   rises interpenetrating")

@@ -24,7 +24,6 @@ growth_per_step_runs.csv counts them), delta_A early and late as tools/sweep.py 
 them (the paper's text as reference), and the loop time.
 """
 import argparse
-import concurrent.futures
 import os
 import re
 import sys
@@ -81,8 +80,7 @@ def main():
         p.error(f"--jobs must be at least 1, got {args.jobs}")
     jobs = [(tissue, point, seed) for tissue in args.tissues for point in args.points
             for seed in SEEDS]
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        rows = list(pool.map(lambda job: run(args, *job), jobs))
+    rows = same_tissue.run_all(args.jobs, lambda job: run(args, *job), jobs)
     same_tissue.write_csv(args.out, COLUMNS, rows)
     for tissue in args.tissues:
         for point in args.points:

@@ -4,6 +4,7 @@ high_pressure.py for Fig 6):
 tissue_N16.data with a figure's parameter file and its base set (theta0_min -3 pi/20 in both) at
 the pressure of that figure's sweeps."""
 import argparse
+import concurrent.futures
 import csv
 import os
 import re
@@ -168,6 +169,19 @@ def compare_first_steps(doc, name, label, values, driver_settings, package_varia
               f"{float(r[4]):.3f} {r[5]} ({r[6] or '-'})")
     print(f"wrote {a.out}")
     return a
+
+
+def run_all(jobs, one, tasks):
+    """[one(task) for task in tasks], jobs at a time. A run that fails, or Ctrl-C, cancels the
+    runs not yet started (a free worker may have picked up the next one already); the ones under
+    way finish, then the error is raised."""
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        futures = [pool.submit(one, task) for task in tasks]
+        try:
+            return [future.result() for future in futures]
+        except BaseException:
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
 
 
 def write_csv(path, columns, rows):
