@@ -35,6 +35,12 @@ a copy of a validation.md. Checks, against means and standard errors computed he
   * two sweeps of one figure: each gets the figure's directions and table, the first lends the
     base point; the flag given twice reads as one; the section names each sweep by the file
     it was planned from; a sweep given twice is refused;
+  * a sweep run in parts: judged as its whole grid (a point of one part against the base of
+    another), its heatmaps drawn from a part's folder and kept from its archive; parts that
+    each plan only some points get no directions of their own; a Fig 6 whole run as two
+    complete grids, one per tissue, pools both tissues' runs per point (directions, a table
+    and P0 figure of its own, drawn once from the archives) while each part keeps its own
+    directions;
   * bad input: no sweep, a folder without runs, a file that is not <name>_summary.csv, a
     missing archive.
 Exit 77 (skipped) without python3-matplotlib, which the figures need.
@@ -53,6 +59,7 @@ ROOT = os.path.dirname(HERE)
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 REPORT = os.path.join(ROOT, "tools", "sweep_report.py")
 TISSUE = os.path.join(ROOT, "examples", "tissue", "tissue_N16.data")
+VORONOI = os.path.join(ROOT, "examples", "tissue", "voronoi_N16.data")
 problems = []
 
 # delta_phi_plus of each run, by point and seed (seed 3 of P0 = 5e-2 is the failed run; its two
@@ -516,12 +523,74 @@ def check_parts(scratch, out):
            "![fig5_w_heatmaps.png]" in text,
            f"from the part's archive: the whole's heatmaps drawn again or not linked: "
            f"{result.stderr}")
+    expect("fig5_wa)" not in line_of(both, "low beta compacts") and
+           "plans every point of the whole" not in both,
+           "a part with one point of its whole's three is judged on its own")
     whole_folder = os.path.join(scratch, "fig5_w")
     subprocess.run([sys.executable, SWEEP, "plan", whole, whole_folder], check=True,
                    stdout=subprocess.DEVNULL)
     result, _ = report(["--fig5", folder, whole_folder], doc, out)
     expect(result.returncode != 0 and "each sweep once" in result.stderr,
            f"the whole given with its part: exit {result.returncode}, {result.stderr}")
+
+
+def check_pooled_parts(scratch, out):
+    """A Fig 6 grid from two tissues, run as two parts that each plan every point from one
+    tissue (as fig6.sweep and fig6_voronoi.sweep of fig6_two_tissues.sweep): the whole's
+    directions pool both parts' runs per point, each part keeps directions of its own, the
+    whole gets a table and its figure against P0, drawn from the parts' archives where no
+    report drew it, and kept where one did."""
+    points = "".join(f"point {p}\n" for p in FIG6_POINTS[:2])
+    common = (f"parameters {os.path.join(ROOT, 'potentials', 'fig6.mesophyll')}\nset base\n"
+              f"seeds 1 2 3\nfixed steps 3 phi_stop 0.45\n")
+    with open(os.path.join(scratch, "fig6_pw.sweep"), "w") as f:
+        f.write(f"name fig6_pw\n{points}tissue {TISSUE} {VORONOI}\n" + common)
+    folders = []
+    for name, tissue in (("fig6_pa", TISSUE), ("fig6_pb", VORONOI)):
+        with open(os.path.join(scratch, f"{name}.sweep"), "w") as f:
+            f.write(f"name {name}\npart_of fig6_pw.sweep\n{points}tissue {tissue}\n" + common)
+        folders.append(os.path.join(scratch, name))
+        subprocess.run([sys.executable, SWEEP, "plan", os.path.join(scratch, f"{name}.sweep"),
+                        folders[-1]], check=True, stdout=subprocess.DEVNULL)
+        fake_results(folders[-1])
+    doc = os.path.join(scratch, "doc", "validation.md")
+    result, text = report(["--fig6"] + folders, doc, out)
+    expect(result.returncode == 0, f"two complete parts: exit {result.returncode}, "
+                                   f"{result.stderr}")
+    # seed 3 at 5e-2 fails in both parts: 4 accepted runs against the base's 6
+    high = [v for s, v in enumerate(DPHI["P0=5e-2"], 1) if str(s) != FAILED[1]] * 2
+    base = DPHI["P0=1e-3"] * 2
+    lines = [line for line in text.splitlines() if line.startswith("- *P0 = 5e-2 compacts*")]
+    pooled = [line for line in lines if "fig6_pw)" in line]
+    expect(len(pooled) == 1 and mean_se_text(high) in pooled[0] and
+           mean_se_text(base) in pooled[0] and "[4 ok, 2 failed]" in pooled[0],
+           f"the whole's 5e-2 line does not pool both tissues' runs "
+           f"({mean_se_text(high)} against {mean_se_text(base)}): {pooled}")
+    expect(sum("fig6_pa)" in line for line in lines) == 1 and
+           sum("fig6_pb)" in line for line in lines) == 1,
+           f"the complete parts have no 5e-2 lines of their own: {lines}")
+    expect("fig6_pa and fig6_pb plan every point of the whole" in text and
+           "Its points pool the runs of several parts" in text and
+           "| P0=1e-3 ftol=1e-10 | 6 ok | " in text and
+           "![fig6_pw_against.png]" in text,
+           "the whole has no table of its pooled points or no figure against P0")
+    png = os.path.join(out, "fig6_pw_against.png")
+    drawn = [r for r in csv.DictReader(open(os.path.join(out, "fig6_pw_against.csv")))
+             if r["quantity"] == "delta_phi_plus" and float(r["P0"]) == 0.05]
+    expect(len(drawn) == 1 and abs(float(drawn[0]["mean"]) - mean_se(high)[0]) < 1e-12 and
+           drawn[0]["runs"] == "4", f"the whole's figure at 5e-2: not the 4 pooled runs: {drawn}")
+    archives = [os.path.join(out, f"{name}_summary.csv") for name in ("fig6_pa", "fig6_pb")]
+    os.remove(png)
+    result, text = report(["--fig6"] + archives, doc, out, scratch)
+    expect(result.returncode == 0 and os.path.exists(png) and "![fig6_pw_against.png]" in text,
+           f"from archives alone, without a figure: the whole's figure not drawn: "
+           f"{result.stderr}")
+    if not os.path.exists(png):
+        return
+    stamp = os.path.getmtime(png)
+    result, _ = report(["--fig6"] + archives, doc, out, scratch)
+    expect(result.returncode == 0 and os.path.getmtime(png) == stamp,
+           "from archives alone, with a figure: the whole's figure drawn again")
 
 
 def main():
@@ -637,6 +706,7 @@ def main():
         check_two_of_a_figure(scratch, fig6, fig5, out)
         check_archives(scratch, fig6, {"fig5_t": from_fig5, "fig5_cap": from_fig5_cap}, out)
         check_parts(scratch, out)
+        check_pooled_parts(scratch, out)
         # a Fig 5 sweep that leaves P0 to its parameter set (1e-7) and lacks its base borrows
         # fig6_t's 1e-7 runs: the borrowing reads the set's P0 (a KeyError on P0 before)
         result, text = report_without_base(scratch, fig6, doc, out, "fig5_set_p0",

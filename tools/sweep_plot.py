@@ -221,12 +221,17 @@ def against(args, rows):
             std = np.array([s[1] for _, s in stats])
             ax.errorbar(x, mean, yerr=np.nan_to_num(std), marker="o", capsize=3, label=title)
             table += [[quantity, k[0], *s] for k, s in stats]
-        for (x,), counts in run_counts(rows, [args.x]).items():
+        # every other label a line higher: neighbours on the log axis (5e-2, 1e-1) would overlap
+        for k, ((x,), counts) in enumerate(sorted(run_counts(rows, [args.x]).items())):
             if np.isfinite(x):
                 ax.annotate(count_label(*counts), (x, 0), xycoords=("data", "axes fraction"),
-                            ha="center", va="bottom", fontsize=7, xytext=(0, 3),
+                            ha="center", va="bottom", fontsize=7, xytext=(0, 3 + 9 * (k % 2)),
                             textcoords="offset points")
         ax.set_xscale("log")
+        # every grid value in view, also one without an accepted run (only its label drawn)
+        grid = [x for (x,) in run_counts(rows, [args.x]) if np.isfinite(x) and x > 0]
+        if grid:
+            ax.set_xlim(min(grid) / 2, max(grid) * 2)
         ax.set_xlabel(args.x)
         ax.legend()
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: mean and standard deviation "

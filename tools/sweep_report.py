@@ -474,22 +474,33 @@ class Sweep:
 class Whole:
     """A sweep run in parts (sweep files with part_of): its runs in the order of its own plan,
     each with the row of the part that ran it, or unfinished where no part given has; and the
-    heatmaps of the whole grid. The verdicts are the whole's (a part's runs are the whole's,
-    so points of two parts compare as points of one sweep); the parts keep their own tables
-    and figures, and borrow no base point. The heatmaps are drawn where a part comes from its
-    folder (new runs); from archives alone the ones drawn then are kept (nothing is written
-    beside the archives)."""
+    figure of the whole grid (Fig 4 and 5: heatmaps; Fig 6: against P0). The verdicts are the
+    whole's (a part's runs are the whole's, so points of two parts compare as points of one
+    sweep); the parts keep their own tables and figures, and borrow no base point. A part that
+    plans every point of the whole (the whole grid from one of its tissues) is an ensemble of
+    its own as well: it keeps its verdicts (complete), and the whole, whose points then pool
+    the runs of several parts (pooled), gets a table of its own. The figure is drawn where a
+    part comes from its folder (new runs), or where no report has drawn it yet; from archives
+    alone one drawn earlier is kept."""
 
     def __init__(self, kind, path, parts, out, accept):
         self.kind, self.parts, self.figures, self.accept = kind, parts, [], accept
         definition, _, planned = sweep.planned_runs(path)
         self.name, self.sweep_file = definition.name, shown(path)
-        ran = {}
+        ran, planned_by = {}, []
         for part in parts:
             part_definition, _, part_runs = sweep.planned_runs(part.sweep_path)
             key = {run["id"]: sweep.run_key(part_definition, run) for run in part_runs}
+            planned_by.append(set(key.values()))
             for row in part.rows:
                 ran[key[row["run"]]] = row
+        whole_points = {}
+        for run in planned:
+            whole_points.setdefault(run["point"], set()).add(sweep.run_key(definition, run))
+        self.complete = [part for part, keys in zip(parts, planned_by)
+                         if all(keys & runs for runs in whole_points.values())]
+        self.pooled = any(sum(bool(keys & runs) for keys in planned_by) > 1
+                          for runs in whole_points.values())
         self.rows = []
         for run in planned:
             row = dict(ran.get(sweep.run_key(definition, run)) or
@@ -498,8 +509,10 @@ class Whole:
                        tissue=sweep.path_from(ROOT, run["tissue"]), N=run["values"]["N"],
                        steps_planned=run["values"].get("steps", ""))
             self.rows.append(row)
-        png = os.path.join(out, f"{self.name}_heatmaps.png")
-        if any(not part.archived for part in parts) and self.kind in HIGHLIGHTED:
+        self.figure = "heatmaps" if self.kind in HIGHLIGHTED else "against"
+        png = os.path.join(out, f"{self.name}_{self.figure}.png")
+        if any(r["status"] in accept for r in self.rows) and (
+                any(not part.archived for part in parts) or not os.path.exists(png)):
             self.draw(png, accept)
         if os.path.exists(png):
             self.figures.append(png)
@@ -522,22 +535,35 @@ class Whole:
                 out = csv.DictWriter(f, columns, restval="")
                 out.writeheader()
                 out.writerows(self.rows)
-            run_tool([PLOT, "heatmaps", folder, "-o", png] + heatmap_axes(self.kind, self.rows)
+            axes = (heatmap_axes(self.kind, self.rows) if self.figure == "heatmaps"
+                    else ["--x", "P0"])
+            run_tool([PLOT, self.figure, folder, "-o", png] + axes
                      + [a for k in sorted(accept) if k != "ok" for a in ("--accept", k)])
 
     def lines(self, rel):
         counts = Ensemble(self.rows, {"ok"}).status_text()
         done = sum(r["status"] != "unfinished" for r in self.rows)
         names = listed([part.name for part in self.parts])
+        one = len(self.complete) == 1
+        own = (f" {listed([part.name for part in self.complete])} "
+               f"{'plans' if one else 'plan'} every point of the whole (the whole "
+               f"grid from fewer seeds or tissues), so {'it has' if one else 'they have'} "
+               f"directions of {'its' if one else 'their'} own above as well." if self.complete
+               else "")
+        pooled = (" Its points pool the runs of several parts (means over all their seeds "
+                  "and tissues):" if self.pooled else "")
+        figure = ("The heatmaps of the whole grid:" if self.figure == "heatmaps" else
+                  "delta_A and delta_phi_plus against P0 over the whole grid:")
         return ([f"**{self.name}** ({self.kind}, the whole grid of `{self.sweep_file}`, run in "
                  f"parts): {done} of {len(self.rows)} runs done, from its part"
                  f"{'s' if len(self.parts) > 1 else ''} {names} ({counts}). Each part plans "
                  f"only runs of the whole, the same in every variable (`tools/sweep.py plan` "
                  f"checks it), so the verdicts above compare points across parts as the "
-                 f"whole's; each part's table, cost and figures (below) are its own. The "
-                 f"heatmaps of the whole grid:", ""]
+                 f"whole's; each part's table, cost and figures (below) are its own.{own}"
+                 + (f"{pooled}" if self.pooled else f" {figure}"), ""]
+                + (points_table(self) + ["", figure, ""] if self.pooled else [])
                 + [f"![{os.path.basename(p)}]({rel(p)})" for p in self.figures]
-                + (["No figure: no part of it was reported from its sweep folder."]
+                + (["No figure: no part of it has an accepted run."]
                    if not self.figures else []) + [""])
 
 
@@ -807,8 +833,9 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
         f"withdrawn runs and figures are {whose}.")
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of {files} (the paper's full grids "
-             "are `fig4.sweep`, `fig5.sweep` and `fig6.sweep`; the other sweep files are reduced "
-             f"grids of them, each saying how and why).{source} Every run has vertex "
+             "are `fig4.sweep`, `fig5.sweep` and `fig6.sweep`, and `fig6_two_tissues.sweep` "
+             "the last from two tissues; the other sweep files are reduced grids of them, each "
+             f"saying how and why).{source} Every run has vertex "
              "insertion (the example's default). "
              "Runs stop once phi_patch falls below their sweep's phi_stop or at their step "
              "cap (both given per sweep below). Status as "
@@ -853,8 +880,10 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
         ("P0 = 5e-2 compacts", "fig6", {"P0": 5e-2}, "delta_phi_plus", +1),
         ("P0 = 5e-2 gives extreme calA", "fig6", {"P0": 5e-2}, "calA_final", +1,
          "calA_final: mean calA at the run's last step.")]
-    # a sweep run in parts is judged as its whole grid, whose runs are the parts' runs
-    in_parts = {id(part) for whole in wholes for part in whole.parts}
+    # a sweep run in parts is judged as its whole grid, whose runs are the parts' runs; a part
+    # that plans every point of its whole is judged on its own as well
+    in_parts = {id(part) for whole in wholes for part in whole.parts
+                if part not in whole.complete}
     judged = [s for s in sweeps if id(s) not in in_parts] + list(wholes)
     for kind in ("fig5", "fig4", "fig6"):
         for k, figure_sweep in enumerate([s for s in judged if s.kind == kind] or [None]):
