@@ -36,7 +36,8 @@ a copy of a validation.md. Checks, against means and standard errors computed he
     base point; the flag given twice reads as one; the section names each sweep by the file
     it was planned from; a sweep given twice is refused;
   * a sweep run in parts: judged as its whole grid (a point of one part against the base of
-    another), its heatmaps drawn from a part's folder and kept from its archive; parts that
+    another), its heatmaps drawn from a part's folder and, from its archive, kept where they
+    were drawn from the same runs; parts that
     each plan only some points get no directions of their own; a Fig 6 whole run as two
     complete grids, one per tissue, pools both tissues' runs per point (directions, a table
     and P0 figure of its own, drawn once from the archives) while each part keeps its own
@@ -93,16 +94,17 @@ def plan(scratch, name, parameters, points, fixed, protocol=None):
     return folder
 
 
-def fake_results(folder, unconverged=()):
-    """Per run the files a finished run leaves, with delta_phi_plus from DPHI; the runs of
-    unconverged ((point, seed) pairs) end on a minimum that reached the iteration limit."""
+def fake_results(folder, unconverged=(), offset=0.0):
+    """Per run the files a finished run leaves, with delta_phi_plus from DPHI (plus offset); the
+    runs of unconverged ((point, seed) pairs) end on a minimum that reached the iteration
+    limit."""
     import json
     for run in sorted(os.listdir(os.path.join(folder, "runs"))):
         where = os.path.join(folder, "runs", run)
         record = json.load(open(os.path.join(where, "run.json")))
         point = " ".join(p for p in record["point"].split() if not p.startswith("ftol"))
         seed = record["seed"]
-        dphi = DPHI[point][int(seed) - 1]
+        dphi = DPHI[point][int(seed) - 1] + offset
         with open(os.path.join(where, "growth.N16.txt"), "w") as f:
             f.write("# step P phi phi_patch calA z bonds dphi_plus iterations\n")
             for step, (phi, calA) in enumerate([(0.93, 1.14), (0.70, 1.5), (0.50, 2.1)], 1):
@@ -516,9 +518,11 @@ def check_parts(scratch, out):
     expect(abs(float(at["30.0", "0.4"]["mean"]) - m) < 1e-12 and
            at["30.0", "0.4"]["runs"] == "3" and ("100.0", "0.01") not in at,
            f"the whole's heatmap: not the part's runs at beta 30 and none at beta 100: {at}")
+    # drawn of both parts' runs, so drawn again of the one part's; then kept
+    archive = os.path.join(out, "fig5_wa_summary.csv")
+    report(["--fig5", archive], doc, out, scratch)
     stamp = os.path.getmtime(png)
-    result, text = report(["--fig5", os.path.join(out, "fig5_wa_summary.csv")], doc, out,
-                          scratch)
+    result, text = report(["--fig5", archive], doc, out, scratch)
     expect(result.returncode == 0 and os.path.getmtime(png) == stamp and
            "![fig5_w_heatmaps.png]" in text,
            f"from the part's archive: the whole's heatmaps drawn again or not linked: "
@@ -539,27 +543,31 @@ def check_pooled_parts(scratch, out):
     tissue (as fig6.sweep and fig6_voronoi.sweep of fig6_two_tissues.sweep): the whole's
     directions pool both parts' runs per point, each part keeps directions of its own, the
     whole gets a table and its figure against P0, drawn from the parts' archives where no
-    report drew it, and kept where one did."""
+    report drew it, drawn again where one drew it from fewer parts, and kept where one drew it
+    from the same runs. The second tissue's runs compact 0.01 more, so that the pooled means
+    are neither part's."""
     points = "".join(f"point {p}\n" for p in FIG6_POINTS[:2])
     common = (f"parameters {os.path.join(ROOT, 'potentials', 'fig6.mesophyll')}\nset base\n"
               f"seeds 1 2 3\nfixed steps 3 phi_stop 0.45\n")
     with open(os.path.join(scratch, "fig6_pw.sweep"), "w") as f:
         f.write(f"name fig6_pw\n{points}tissue {TISSUE} {VORONOI}\n" + common)
     folders = []
-    for name, tissue in (("fig6_pa", TISSUE), ("fig6_pb", VORONOI)):
+    offset = 0.01
+    for name, tissue, more in (("fig6_pa", TISSUE, 0.0), ("fig6_pb", VORONOI, offset)):
         with open(os.path.join(scratch, f"{name}.sweep"), "w") as f:
             f.write(f"name {name}\npart_of fig6_pw.sweep\n{points}tissue {tissue}\n" + common)
         folders.append(os.path.join(scratch, name))
         subprocess.run([sys.executable, SWEEP, "plan", os.path.join(scratch, f"{name}.sweep"),
                         folders[-1]], check=True, stdout=subprocess.DEVNULL)
-        fake_results(folders[-1])
+        fake_results(folders[-1], offset=more)
     doc = os.path.join(scratch, "doc", "validation.md")
     result, text = report(["--fig6"] + folders, doc, out)
     expect(result.returncode == 0, f"two complete parts: exit {result.returncode}, "
                                    f"{result.stderr}")
     # seed 3 at 5e-2 fails in both parts: 4 accepted runs against the base's 6
-    high = [v for s, v in enumerate(DPHI["P0=5e-2"], 1) if str(s) != FAILED[1]] * 2
-    base = DPHI["P0=1e-3"] * 2
+    high = [v for s, v in enumerate(DPHI["P0=5e-2"], 1) if str(s) != FAILED[1]]
+    high += [v + offset for v in high]
+    base = DPHI["P0=1e-3"] + [v + offset for v in DPHI["P0=1e-3"]]
     lines = [line for line in text.splitlines() if line.startswith("- *P0 = 5e-2 compacts*")]
     pooled = [line for line in lines if "fig6_pw)" in line]
     expect(len(pooled) == 1 and mean_se_text(high) in pooled[0] and
@@ -585,6 +593,16 @@ def check_pooled_parts(scratch, out):
     expect(result.returncode == 0 and os.path.exists(png) and "![fig6_pw_against.png]" in text,
            f"from archives alone, without a figure: the whole's figure not drawn: "
            f"{result.stderr}")
+
+    def runs_drawn_at_high():
+        return [r["runs"] for r in csv.DictReader(open(os.path.join(out, "fig6_pw_against.csv")))
+                if r["quantity"] == "delta_phi_plus" and float(r["P0"]) == 0.05]
+    report(["--fig6", archives[0]], doc, out, scratch)
+    half = runs_drawn_at_high()
+    result, _ = report(["--fig6"] + archives, doc, out, scratch)
+    expect(half == ["2"] and runs_drawn_at_high() == ["4"],
+           f"the figure of one part's runs not drawn again with both parts' archives: runs at "
+           f"5e-2 {half}, then {runs_drawn_at_high()}")
     if not os.path.exists(png):
         return
     stamp = os.path.getmtime(png)

@@ -10,7 +10,9 @@ Each DIR is a sweep folder of examples/sweep/fig4*.sweep, fig5*.sweep or fig6*.s
 partly run) with examples/sweep/in.sweep. A figure may have several sweeps (e.g. fig6_coarse
 and fig6_N32, the same pressures at 16 and 32 cells): each gets the figure's directions, and
 the first Fig 6 sweep is the one a Fig 4 or 5 sweep borrows its base point from. The parts of
-a sweep run in parts (part_of) are judged together as their whole grid. For each:
+a sweep run in parts (part_of) are judged together as their whole grid; a part that plans every
+point of its whole (fig6.sweep and fig6_voronoi.sweep, one tissue each, of fig6_two_tissues.sweep)
+is judged on its own as well. For each:
 `tools/sweep.py summary DIR`, its summary.csv and points.csv copied to OUT/<sweep>_summary.csv
 and _points.csv, its withdrawn runs (run, reason, loop seconds) to OUT/<sweep>_withdrawn.csv,
 the figures of tools/sweep_plot.py into OUT (Fig 4 and 5: heatmaps with the caption's
@@ -480,8 +482,9 @@ class Whole:
     plans every point of the whole (the whole grid from one of its tissues) is an ensemble of
     its own as well: it keeps its verdicts (complete), and the whole, whose points then pool
     the runs of several parts (pooled), gets a table of its own. The figure is drawn where a
-    part comes from its folder (new runs), or where no report has drawn it yet; from archives
-    alone one drawn earlier is kept."""
+    part comes from its folder (new runs), or where none was drawn yet from as many runs (from
+    archives alone one drawn earlier from the same runs is kept); only where it has an accepted
+    run."""
 
     def __init__(self, kind, path, parts, out, accept):
         self.kind, self.parts, self.figures, self.accept = kind, parts, [], accept
@@ -511,11 +514,24 @@ class Whole:
             self.rows.append(row)
         self.figure = "heatmaps" if self.kind in HIGHLIGHTED else "against"
         png = os.path.join(out, f"{self.name}_{self.figure}.png")
-        if any(r["status"] in accept for r in self.rows) and (
-                any(not part.archived for part in parts) or not os.path.exists(png)):
-            self.draw(png, accept)
-        if os.path.exists(png):
+        if any(r["status"] in accept for r in self.rows):
+            if any(not part.archived for part in parts) or not self.drawn_from_these(png):
+                self.draw(png, accept)
             self.figures.append(png)
+
+    def drawn_from_these(self, png):
+        """Whether the figure at png was drawn from the accepted runs the whole has now, by
+        their number per quantity (the CSV beside it counts each tile's or point's runs): one
+        drawn from fewer parts, or from none, is drawn again."""
+        table = os.path.splitext(png)[0] + ".csv"
+        if not (os.path.exists(png) and os.path.exists(table)):
+            return False
+        drawn = {}
+        for r in csv.DictReader(open(table)):
+            drawn[r["quantity"]] = drawn.get(r["quantity"], 0) + int(r["runs"])
+        return all(n == sum(r["status"] in self.accept and number(r.get(q)) is not None and
+                            math.isfinite(number(r.get(q))) for r in self.rows)
+                   for q, n in drawn.items())
 
     def at(self, **values):
         return ensemble_at(self.rows, values, self.accept)
@@ -834,8 +850,8 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
     lines = [SECTION_BEGIN, "## The sensitivity study as ensembles (Figs 4-6 of the paper)", "",
              f"Made by `{command}` from the sweep folders of {files} (the paper's full grids "
              "are `fig4.sweep`, `fig5.sweep` and `fig6.sweep`, and `fig6_two_tissues.sweep` "
-             "the last from two tissues; the other sweep files are reduced grids of them, each "
-             f"saying how and why).{source} Every run has vertex "
+             "the last from two tissues; the other sweep files are reduced grids or parts of "
+             f"them, each saying how and why).{source} Every run has vertex "
              "insertion (the example's default). "
              "Runs stop once phi_patch falls below their sweep's phi_stop or at their step "
              "cap (both given per sweep below). Status as "
@@ -988,7 +1004,7 @@ def main():
                    ({sweep.SweepFile(w).name for w in whole_files} & set(names)))
     if twice:    # their CSVs and figures in OUT would overwrite each other
         p.error(f"two sweeps named {', '.join(twice)} (or a sweep given with its parts, whose "
-                f"whole grid's heatmaps bear its name): each sweep once")
+                f"whole grid's figure bears its name): each sweep once")
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
     sweeps = [Sweep(kind, source, args.out, set(args.accept), args.sweeps)
