@@ -520,7 +520,9 @@ def check_parts(scratch, out):
            f"the whole's heatmap: not the part's runs at beta 30 and none at beta 100: {at}")
     # drawn of both parts' runs, so drawn again of the one part's; then kept
     archive = os.path.join(out, "fig5_wa_summary.csv")
-    report(["--fig5", archive], doc, out, scratch)
+    result, _ = report(["--fig5", archive], doc, out, scratch)
+    expect(result.returncode == 0, f"the part's archive: exit {result.returncode}, "
+                                   f"{result.stderr}")
     stamp = os.path.getmtime(png)
     result, text = report(["--fig5", archive], doc, out, scratch)
     expect(result.returncode == 0 and os.path.getmtime(png) == stamp and
@@ -594,15 +596,22 @@ def check_pooled_parts(scratch, out):
            f"from archives alone, without a figure: the whole's figure not drawn: "
            f"{result.stderr}")
 
-    def runs_drawn_at_high():
-        return [r["runs"] for r in csv.DictReader(open(os.path.join(out, "fig6_pw_against.csv")))
+    def drawn_at_high():
+        """(mean, accepted runs, all runs) drawn at 5e-2."""
+        return [(round(float(r["mean"]), 12), r["runs"], r["all_runs"])
+                for r in csv.DictReader(open(os.path.join(out, "fig6_pw_against.csv")))
                 if r["quantity"] == "delta_phi_plus" and float(r["P0"]) == 0.05]
+    alone = [round(mean_se(high[:2])[0], 12), round(mean_se(high[2:])[0], 12)]
     report(["--fig6", archives[0]], doc, out, scratch)
-    half = runs_drawn_at_high()
+    first = drawn_at_high()
+    # the other tissue alone: as many runs, other means
+    report(["--fig6", archives[1]], doc, out, scratch)
+    second = drawn_at_high()
     result, _ = report(["--fig6"] + archives, doc, out, scratch)
-    expect(half == ["2"] and runs_drawn_at_high() == ["4"],
-           f"the figure of one part's runs not drawn again with both parts' archives: runs at "
-           f"5e-2 {half}, then {runs_drawn_at_high()}")
+    expect(first == [(alone[0], "2", "6")] and second == [(alone[1], "2", "6")] and
+           drawn_at_high()[0][1:] == ("4", "6"),
+           f"the whole's figure not drawn again for the parts given: at 5e-2 {first} (one "
+           f"tissue), {second} (the other), then {drawn_at_high()} (both); want means {alone}")
     if not os.path.exists(png):
         return
     stamp = os.path.getmtime(png)

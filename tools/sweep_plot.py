@@ -20,7 +20,8 @@ and the runs whose checks failed (rings crossed, non-finite values): those are s
 failed, never drawn as data.
 
 Only runs with status ok enter, with --accept unconverged those too (the others are counted
-in the titles). Writes a PNG (default DIR/<kind>.png) and the numbers drawn as a CSV beside it.
+in the titles). Writes a PNG (default DIR/<kind>.png) and the numbers drawn as a CSV beside it
+(heatmaps and against: per tile or point also all its runs and its failed ones).
 Needs python3-numpy and python3-matplotlib.
 """
 import argparse
@@ -129,11 +130,12 @@ def heatmaps(args, rows):
     table = []
     for ax, (quantity, title) in zip(axes.flat, QUANTITIES):
         stats = ensemble(rows, [args.x, args.y], quantity)
+        counts = run_counts(rows, [args.x, args.y])
         grid = np.full((len(ys), len(xs)), np.nan)
         for (x, y), (mean, std, n) in stats.items():
             if x in xs and y in ys:
                 grid[ys.index(y), xs.index(x)] = mean
-            table.append([quantity, x, y, mean, std, n])
+            table.append([quantity, x, y, mean, std, n, *counts[x, y][1:]])
         positive = grid[np.isfinite(grid) & (grid > 0)]
         norm = mcolors.LogNorm(positive.min(), positive.max()) if positive.size else None
         shown = np.ma.masked_where(~np.isfinite(grid) | (grid <= 0), grid)
@@ -164,7 +166,7 @@ def heatmaps(args, rows):
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: ensemble means "
                  f"({excluded(rows)})\ngrey: no ok run or a value <= 0; "
                  f"per tile: ok runs / runs (and failed runs)", fontsize=10)
-    return fig, ["quantity", args.x, args.y, "mean", "std", "runs"], table
+    return fig, ["quantity", args.x, args.y, "mean", "std", "runs", "all_runs", "failed"], table
 
 
 def curves(args, rows):
@@ -216,11 +218,12 @@ def against(args, rows):
     for ax, quantities in zip(axes, (QUANTITIES[:2], QUANTITIES[2:3])):
         for quantity, title in quantities:
             stats = sorted(ensemble(rows, [args.x], quantity).items())
+            counts = run_counts(rows, [args.x])
             x = np.array([k[0] for k, _ in stats])
             mean = np.array([s[0] for _, s in stats])
             std = np.array([s[1] for _, s in stats])
             ax.errorbar(x, mean, yerr=np.nan_to_num(std), marker="o", capsize=3, label=title)
-            table += [[quantity, k[0], *s] for k, s in stats]
+            table += [[quantity, k[0], *s, *counts[k][1:]] for k, s in stats]
         # every other label a line higher: neighbours on the log axis (5e-2, 1e-1) would overlap
         for k, ((x,), counts) in enumerate(sorted(run_counts(rows, [args.x]).items())):
             if np.isfinite(x):
@@ -237,7 +240,7 @@ def against(args, rows):
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.dir))}: mean and standard deviation "
                  f"over seeds and tissues\n({excluded(rows)}); labels: ok runs / runs",
                  fontsize=10)
-    return fig, ["quantity", args.x, "mean", "std", "runs"], table
+    return fig, ["quantity", args.x, "mean", "std", "runs", "all_runs", "failed"], table
 
 
 def main():

@@ -481,10 +481,8 @@ class Whole:
     sweep); the parts keep their own tables and figures, and borrow no base point. A part that
     plans every point of the whole (the whole grid from one of its tissues) is an ensemble of
     its own as well: it keeps its verdicts (complete), and the whole, whose points then pool
-    the runs of several parts (pooled), gets a table of its own. The figure is drawn where a
-    part comes from its folder (new runs), or where none was drawn yet from as many runs (from
-    archives alone one drawn earlier from the same runs is kept); only where it has an accepted
-    run."""
+    the runs of several parts (pooled), gets a table of its own. The figure is drawn where the
+    whole has an accepted run, and replaces one drawn earlier from other numbers (draw())."""
 
     def __init__(self, kind, path, parts, out, accept):
         self.kind, self.parts, self.figures, self.accept = kind, parts, [], accept
@@ -515,23 +513,8 @@ class Whole:
         self.figure = "heatmaps" if self.kind in HIGHLIGHTED else "against"
         png = os.path.join(out, f"{self.name}_{self.figure}.png")
         if any(r["status"] in accept for r in self.rows):
-            if any(not part.archived for part in parts) or not self.drawn_from_these(png):
-                self.draw(png, accept)
+            self.draw(png, accept)
             self.figures.append(png)
-
-    def drawn_from_these(self, png):
-        """Whether the figure at png was drawn from the accepted runs the whole has now, by
-        their number per quantity (the CSV beside it counts each tile's or point's runs): one
-        drawn from fewer parts, or from none, is drawn again."""
-        table = os.path.splitext(png)[0] + ".csv"
-        if not (os.path.exists(png) and os.path.exists(table)):
-            return False
-        drawn = {}
-        for r in csv.DictReader(open(table)):
-            drawn[r["quantity"]] = drawn.get(r["quantity"], 0) + int(r["runs"])
-        return all(n == sum(r["status"] in self.accept and number(r.get(q)) is not None and
-                            math.isfinite(number(r.get(q))) for r in self.rows)
-                   for q, n in drawn.items())
 
     def at(self, **values):
         return ensemble_at(self.rows, values, self.accept)
@@ -543,6 +526,9 @@ class Whole:
                 for p in labels]
 
     def draw(self, png, accept):
+        """Draw the figure in a scratch folder; put it at png unless the one there was drawn from
+        the same numbers (the CSVs beside them agree: per tile or point the mean, spread and
+        accepted, all and failed runs), so that a report of the same runs writes nothing."""
         columns = list(dict.fromkeys(k for row in self.rows for k in row))
         with tempfile.TemporaryDirectory(prefix="sweep_whole_") as scratch:
             folder = os.path.join(scratch, self.name)    # the figure's title names the folder
@@ -553,8 +539,15 @@ class Whole:
                 out.writerows(self.rows)
             axes = (heatmap_axes(self.kind, self.rows) if self.figure == "heatmaps"
                     else ["--x", "P0"])
-            run_tool([PLOT, self.figure, folder, "-o", png] + axes
+            drawn = os.path.join(scratch, os.path.basename(png))
+            run_tool([PLOT, self.figure, folder, "-o", drawn] + axes
                      + [a for k in sorted(accept) if k != "ok" for a in ("--accept", k)])
+            table, new_table = (os.path.splitext(p)[0] + ".csv" for p in (png, drawn))
+            if os.path.exists(png) and os.path.exists(table) and \
+                    open(table).read() == open(new_table).read():
+                return
+            shutil.copy(drawn, png)
+            shutil.copy(new_table, table)
 
     def lines(self, rel):
         counts = Ensemble(self.rows, {"ok"}).status_text()
