@@ -569,7 +569,7 @@ class Whole:
                  f"only runs of the whole, the same in every variable (`tools/sweep.py plan` "
                  f"checks it), so the verdicts above compare points across parts as the "
                  f"whole's; each part's table, cost and figures (below) are its own.{own}"
-                 + (f"{pooled}" if self.pooled else f" {figure}"), ""]
+                 + (pooled if self.pooled else f" {figure}"), ""]
                 + (points_table(self) + ["", figure, ""] if self.pooled else [])
                 + [f"![{os.path.basename(p)}]({rel(p)})" for p in self.figures]
                 + (["No figure: no part of it has an accepted run."]
