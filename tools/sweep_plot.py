@@ -128,9 +128,9 @@ def heatmaps(args, rows):
     fig, axes = plt.subplots(2, 2, figsize=(10, 8.4), constrained_layout=True)
     marked = [tile_of(xs, ys, mark) for mark in args.mark]
     table = []
+    counts = run_counts(rows, [args.x, args.y])
     for ax, (quantity, title) in zip(axes.flat, QUANTITIES):
         stats = ensemble(rows, [args.x, args.y], quantity)
-        counts = run_counts(rows, [args.x, args.y])
         grid = np.full((len(ys), len(xs)), np.nan)
         for (x, y), (mean, std, n) in stats.items():
             if x in xs and y in ys:
@@ -155,11 +155,11 @@ def heatmaps(args, rows):
         ax.set_title(title)
         for i, j in filter(None, marked):
             ax.plot(i, j, "o", mfc="none", mec="red", ms=12, mew=2)
-        for (x, y), counts in run_counts(rows, [args.x, args.y]).items():
+        for (x, y), tile_counts in counts.items():
             if x in xs and y in ys:
                 # in the middle of its tile; below the ring of a marked point
                 tile = (xs.index(x), ys.index(y))
-                ax.annotate(count_label(*counts), tile, ha="center", va="center",
+                ax.annotate(count_label(*tile_counts), tile, ha="center", va="center",
                             fontsize=7 if len(xs) <= 7 else 6, color="black",
                             xytext=(0, -12 if tile in marked else 0),
                             textcoords="offset points")
@@ -215,24 +215,24 @@ def against(args, rows):
         sys.exit(f"the sweep has no grid axis '{args.x}'")
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), constrained_layout=True)
     table = []
+    counts = run_counts(rows, [args.x])
+    # every grid value in view, also one without an accepted run (only its label drawn)
+    grid = [x for (x,) in counts if np.isfinite(x) and x > 0]
     for ax, quantities in zip(axes, (QUANTITIES[:2], QUANTITIES[2:3])):
         for quantity, title in quantities:
             stats = sorted(ensemble(rows, [args.x], quantity).items())
-            counts = run_counts(rows, [args.x])
             x = np.array([k[0] for k, _ in stats])
             mean = np.array([s[0] for _, s in stats])
             std = np.array([s[1] for _, s in stats])
             ax.errorbar(x, mean, yerr=np.nan_to_num(std), marker="o", capsize=3, label=title)
             table += [[quantity, k[0], *s, *counts[k][1:]] for k, s in stats]
         # every other label a line higher: neighbours on the log axis (5e-2, 1e-1) would overlap
-        for k, ((x,), counts) in enumerate(sorted(run_counts(rows, [args.x]).items())):
+        for k, ((x,), point_counts) in enumerate(sorted(counts.items())):
             if np.isfinite(x):
-                ax.annotate(count_label(*counts), (x, 0), xycoords=("data", "axes fraction"),
+                ax.annotate(count_label(*point_counts), (x, 0), xycoords=("data", "axes fraction"),
                             ha="center", va="bottom", fontsize=7, xytext=(0, 3 + 9 * (k % 2)),
                             textcoords="offset points")
         ax.set_xscale("log")
-        # every grid value in view, also one without an accepted run (only its label drawn)
-        grid = [x for (x,) in run_counts(rows, [args.x]) if np.isfinite(x) and x > 0]
         if grid:
             ax.set_xlim(min(grid) / 2, max(grid) * 2)
         ax.set_xlabel(args.x)
