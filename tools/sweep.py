@@ -32,6 +32,7 @@ nearest phi_patch = 0.5, failed checks, attempts, wall and loop seconds. Standar
 """
 import argparse
 import csv
+import functools
 import itertools
 import json
 import math
@@ -179,8 +180,10 @@ def parameter_sets(path):
     return sets
 
 
+@functools.lru_cache(maxsize=None)
 def cells_in(tissue):
-    """The number of cells (molecule IDs) of a data file."""
+    """The number of cells (molecule IDs) of a data file, read once per file: a grid plans
+    hundreds of runs from the same few tissues, and a part plans its whole's runs again."""
     atoms = DataFile(tissue).sections.get("Atoms", [])
     cells = {words[1] for words in atoms}
     if not cells:
