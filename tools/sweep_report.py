@@ -88,7 +88,7 @@ class Ensemble:
     over the accepted ones (mean, sample standard deviation, standard error of the mean)."""
 
     def __init__(self, rows, accept):
-        self.rows = rows
+        self.rows, self.accept = rows, accept
         self.accepted = [r for r in rows if r["status"] in accept]
         self.counts = {}
         for r in rows:
@@ -116,6 +116,16 @@ class Ensemble:
             return mean, None, None, 1
         sd = math.sqrt(sum((x - mean) ** 2 for x in v) / (n - 1))
         return mean, sd, sd / math.sqrt(n), n
+
+    def tissues(self):
+        """The initial tissues (file names) of the accepted runs, sorted: two points whose means
+        come from different tissues differ by the tissues as well as by the parameters."""
+        return sorted({os.path.basename(r.get("tissue", "")) for r in self.accepted})
+
+    def on(self, tissues):
+        """The runs of this point from the given tissues alone."""
+        return Ensemble([r for r in self.rows
+                         if os.path.basename(r.get("tissue", "")) in tissues], self.accept)
 
     def status_text(self):
         order = ("ok", "unconverged", "failed", "error", "unfinished")
@@ -640,12 +650,39 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
                             f"came within {NEAR_HALF:g} of 0.5, so z is compared at different "
                             f"stages",
             "too few runs": "**cannot be told: fewer than two accepted runs**"}[verdict]
+    mixed = tissue_note(a, b, quantity, sign, name(a_values), name(b_values))
     return (f"- *{title}* ({quantity}; {sweep.name}): {mean_se(ma, sa, na)} at {name(a_values)} "
             f"[{a.status_text()}] against {mean_se(mb, sb, nb)} at {name(b_values)} "
             f"[{b.status_text()}]; difference {fmt(score, '+.1f')} standard errors: {text}. "
             f"Where the runs ended: {name(a_values)}: {reach_note(a)}; {name(b_values)}: "
             f"{reach_note(b)}."
-            + (f" {note}" if note else ""))
+            + (f" {mixed}" if mixed else "") + (f" {note}" if note else ""))
+
+
+def shared_tissues(a, b):
+    """The tissues whose accepted runs both points have."""
+    return [t for t in a.tissues() if t in b.tissues()]
+
+
+def tissue_note(a, b, quantity, sign, a_name, b_name):
+    """Where the accepted runs of two points come from different tissues (a sweep run in parts
+    from several tissues, some not yet run; or every run of one tissue failing at a point), their
+    difference carries the tissues' as well: a sentence saying so, and the difference on the
+    tissues they share alone; '' where the tissues agree."""
+    ta, tb = a.tissues(), b.tissues()
+    if ta == tb or not ta or not tb:
+        return ""
+    shared = shared_tissues(a, b)
+    head = (f"Tissues differ: the accepted runs at {a_name} are from {listed(ta)}, at {b_name} "
+            f"from {listed(tb)}, so the difference carries the tissues' with the seeds'")
+    if not shared:
+        return head + "; they share no tissue to compare on."
+    verdict, *_, score, _ = compare(a.on(shared), b.on(shared), quantity, sign)
+    said = {"holds": "resolved in the stated direction", "opposite": "resolved against it",
+            "not resolved": "not resolved", "equal": "no spread to resolve",
+            "too few runs": "fewer than two accepted runs"}[verdict]
+    size = f"{score:+.1f} standard errors, " if score is not None else ""
+    return head + f"; on {listed(shared)} alone: {size}{said}."
 
 
 def holm(chances, level):
@@ -768,7 +805,7 @@ def optimal_lines(sweeps):
             lines.append(f"  - {one.name}: no base point ({BASE[kind]}).")
             continue
         for quantity in ("delta_A_early", "delta_A_late"):
-            better, ranks, compared, scores, labels = [], [], 0, [], []
+            better, ranks, compared, scores, labels = [], [], [], [], []
             mb = base.stats(quantity)[0]
             everywhere = one.points()
             for label, e in everywhere:
@@ -778,7 +815,7 @@ def optimal_lines(sweeps):
                 ranks.append(m)
                 verdict, *_, score, df = compare(e, base, quantity, -1)
                 if e.rows != base.rows and verdict != "too few runs":
-                    compared += 1
+                    compared.append((label, e))
                 if verdict in ("holds", "opposite", "not resolved") and e.rows != base.rows:
                     scores.append((score, df))    # the family: comparisons with spread
                     labels.append(f"{label} ({m:.3g})")
@@ -794,8 +831,8 @@ def optimal_lines(sweeps):
             rank = 1 + sum(m < mb for m in ranks)
             m, _, se, n = base.stats(quantity)
             stay, note = corrected_note(scores, 1)
-            among = (f"among the {compared} of {len(everywhere) - 1} other points with two or "
-                     f"more accepted runs")
+            among = (f"among the {len(compared)} of {len(everywhere) - 1} other points with "
+                     f"two or more accepted runs")
             lines.append(f"  - {one.name}, {quantity}: base {mean_se(m, se, n)}, "
                          f"rank {rank} of the {len(ranks)} points with an accepted run "
                          f"({len(everywhere)} points in the sweep); "
@@ -805,11 +842,39 @@ def optimal_lines(sweeps):
                             f"{', '.join(labels[k] for k in sorted(stay))}; {note}"
                             if stay else
                             f"**no point resolved lower** once corrected, {among}: resolved "
-                            f"lower alone: {', '.join(better)}; {note}"))
+                            f"lower alone: {', '.join(better)}; {note}")
+                         + matched_note(compared, base, quantity))
     if not lines:
         return ["- *the default is near-optimal in delta_A*: not run."]
     return ["- *the default is near-optimal in delta_A* (the base point of each sweep against "
             "its other points; lower is closer to the reference points):"] + lines
+
+
+def matched_note(compared, base, quantity):
+    """'the default is near-optimal', where some compared points have accepted runs from other
+    tissues than the base: how many, and the family again with each point compared with the
+    base on the tissues they share alone (Holm over that family); '' where every point's
+    tissues are the base's."""
+    mixed = [label for label, e in compared if e.tissues() != base.tissues()]
+    if not mixed:
+        return ""
+    scores, labels = [], []
+    for label, e in compared:
+        shared = shared_tissues(e, base)
+        if not shared:
+            continue
+        verdict, *_, score, df = compare(e.on(shared), base.on(shared), quantity, -1)
+        if verdict in ("holds", "opposite", "not resolved"):
+            scores.append((score, df))
+            labels.append(label)
+    stay, _ = corrected_note(scores, 1)
+    return (f"; tissues differ: {len(mixed)} of the {len(compared)} compared points have "
+            f"accepted runs from other tissues than the base's ({listed(base.tissues())}), so "
+            f"their differences carry the tissues' with the seeds'; compared with the base on "
+            f"the tissues each shares with it alone ({len(scores)} comparisons), "
+            + (f"{len(stay)} stay{'s' if len(stay) == 1 else ''} resolved lower once corrected "
+               f"(Holm): {', '.join(labels[k] for k in sorted(stay))}" if stay else
+               "none stays resolved lower once corrected (Holm)"))
 
 
 def points_table(sweep):
@@ -875,7 +940,13 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
              f"every other grid point), and among many, some resolve by chance: it **does not "
              f"hold** only where a difference stays resolved after Holm's correction for the "
              f"family's size, which makes the whole family as unlikely to resolve one by "
-             f"chance as a single comparison.", ""]
+             f"chance as a single comparison. Where the accepted runs of two compared points "
+             f"come from different initial tissues (a grid run in parts whose second tissue has "
+             f"not run everywhere yet, or a point where every run of one tissue failed), their "
+             f"difference carries the tissues' as well as the parameters': the line says so "
+             f"and compares them again on the tissues both have (near-optimal: each point "
+             f"against the base on the tissues they share, Holm's correction over that "
+             f"family). The verdict is the pooled comparison's.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
     # (title, figure, point, quantity, sign[, note]) of each direction of the paper
     claims = [
