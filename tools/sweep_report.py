@@ -670,7 +670,7 @@ def tissue_note(a, b, quantity, sign, a_name, b_name):
     difference carries the tissues' as well: a sentence saying so, and the difference on the
     tissues they share alone; '' where the tissues agree."""
     ta, tb = a.tissues(), b.tissues()
-    if ta == tb or not ta or not tb:
+    if ta == tb or len(a.accepted) < 2 or len(b.accepted) < 2:    # same, or nothing compared
         return ""
     shared = shared_tissues(a, b)
     head = (f"Tissues differ: the accepted runs at {a_name} are from {listed(ta)}, at {b_name} "
@@ -868,10 +868,13 @@ def matched_note(compared, base, quantity):
             scores.append((score, df))
             labels.append(label)
     stay, _ = corrected_note(scores, 1)
-    return (f"; tissues differ: {len(mixed)} of the {len(compared)} compared points have "
+    has, carry = (("has", "its difference carries") if len(mixed) == 1 else
+                  ("have", "their differences carry"))
+    return (f"; tissues differ: {len(mixed)} of the {len(compared)} compared points {has} "
             f"accepted runs from other tissues than the base's ({listed(base.tissues())}), so "
-            f"their differences carry the tissues' with the seeds'; compared with the base on "
-            f"the tissues each shares with it alone ({len(scores)} comparisons), "
+            f"{carry} the tissues' with the seeds'; compared with the base on "
+            f"the tissues each shares with it alone ({len(scores)} comparison"
+            f"{'' if len(scores) == 1 else 's'}), "
             + (f"{len(stay)} stay{'s' if len(stay) == 1 else ''} resolved lower once corrected "
                f"(Holm): {', '.join(labels[k] for k in sorted(stay))}" if stay else
                "none stays resolved lower once corrected (Holm)"))
@@ -946,7 +949,8 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
              f"difference carries the tissues' as well as the parameters': the line says so "
              f"and compares them again on the tissues both have (near-optimal: each point "
              f"against the base on the tissues they share, Holm's correction over that "
-             f"family). The verdict is the pooled comparison's.", ""]
+             f"family). The verdict is the pooled comparison's. The same tissues in other "
+             f"proportions are not flagged.", ""]
     lines += notes + ([""] if notes else []) + ["### Directions of the paper", ""]
     # (title, figure, point, quantity, sign[, note]) of each direction of the paper
     claims = [
