@@ -349,8 +349,8 @@ def check_tissue_sets(report):
         report.BASE["fig5"] = saved
     expect(len(optimal) == 1 and "**does not hold**: resolved lower at beta=30 (1)" in optimal[0]
            and "tissues differ: 1 of the 2 compared points has accepted runs from other "
-           "tissues than the base's (a.data and b.data), so its difference carries" in optimal[0] and "(2 comparisons), "
-           "none stays resolved lower once corrected (Holm)" in optimal[0],
+           "tissues than the base's (a.data and b.data), so its difference carries" in optimal[0]
+           and "(2 comparisons), none stays resolved lower once corrected (Holm)" in optimal[0],
            f"near-optimal with a point of one tissue against a base of two: the pooled verdict "
            f"without the note, or the matched family wrong: {optimal}")
     line = report.claim_line("low beta compacts", mixed, {"beta": 30}, {"beta": 100},
