@@ -83,6 +83,11 @@ BORROW_RUN_VARIABLES = ("P0", "ftol", "ftol_scale", "fnorm", "phi_stop", "maxite
 
 # --- ensembles and the comparison rule ----------------------------------------------------------
 
+def tissue_name(row):
+    """The file name of a run's initial tissue ('' where the row has none)."""
+    return os.path.basename(row.get("tissue", ""))
+
+
 class Ensemble:
     """The runs of one grid point: how many of each status, and the statistics of a quantity
     over the accepted ones (mean, sample standard deviation, standard error of the mean)."""
@@ -120,12 +125,11 @@ class Ensemble:
     def tissues(self):
         """The initial tissues (file names) of the accepted runs, sorted: two points whose means
         come from different tissues differ by the tissues as well as by the parameters."""
-        return sorted({os.path.basename(r.get("tissue", "")) for r in self.accepted})
+        return sorted({tissue_name(r) for r in self.accepted})
 
     def on(self, tissues):
         """The runs of this point from the given tissues alone."""
-        return Ensemble([r for r in self.rows
-                         if os.path.basename(r.get("tissue", "")) in tissues], self.accept)
+        return Ensemble([r for r in self.rows if tissue_name(r) in tissues], self.accept)
 
     def status_text(self):
         order = ("ok", "unconverged", "failed", "error", "unfinished")
@@ -661,7 +665,8 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
 
 def shared_tissues(a, b):
     """The tissues whose accepted runs both points have."""
-    return [t for t in a.tissues() if t in b.tissues()]
+    theirs = set(b.tissues())
+    return [t for t in a.tissues() if t in theirs]
 
 
 def tissue_note(a, b, quantity, sign, a_name, b_name):
@@ -855,7 +860,8 @@ def matched_note(compared, base, quantity):
     tissues than the base: how many, and the family again with each point compared with the
     base on the tissues they share alone (Holm over that family); '' where every point's
     tissues are the base's."""
-    mixed = [label for label, e in compared if e.tissues() != base.tissues()]
+    base_tissues = base.tissues()
+    mixed = sum(e.tissues() != base_tissues for _, e in compared)
     if not mixed:
         return ""
     scores, labels = [], []
@@ -868,10 +874,10 @@ def matched_note(compared, base, quantity):
             scores.append((score, df))
             labels.append(label)
     stay, _ = corrected_note(scores, 1)
-    has, carry = (("has", "its difference carries") if len(mixed) == 1 else
+    has, carry = (("has", "its difference carries") if mixed == 1 else
                   ("have", "their differences carry"))
-    return (f"; tissues differ: {len(mixed)} of the {len(compared)} compared points {has} "
-            f"accepted runs from other tissues than the base's ({listed(base.tissues())}), so "
+    return (f"; tissues differ: {mixed} of the {len(compared)} compared points {has} "
+            f"accepted runs from other tissues than the base's ({listed(base_tissues)}), so "
             f"{carry} the tissues' with the seeds'; compared with the base on "
             f"the tissues each shares with it alone ({len(scores)} comparison"
             f"{'' if len(scores) == 1 else 's'}), "
@@ -993,7 +999,7 @@ def section(sweeps, doc_dir, command, notes, wholes=()):
         rate = (f"; {one.timed / (one.wall_s / 3600):.0f} runs per partition-hour"
                 if one.wall_s else "")
         seeds = sorted({r["seed"] for r in one.rows}, key=int)
-        tissues = sorted({f"{os.path.basename(r['tissue'])}" for r in one.rows})
+        tissues = sorted({tissue_name(r) for r in one.rows})
         lines += [f"**{one.name}** ({kind}): seeds {' '.join(seeds)} x tissues "
                   f"{', '.join(tissues)} per point; runs stop {one.stopping_rule()}; "
                   f"{done} of {runs} runs done; cost "
