@@ -340,28 +340,26 @@ def check_tissue_sets(report):
     one = from_tissue("a.data", many("delta_A_early", 1.0, 0.5))
     both = (from_tissue("a.data", many("delta_A_early", 1.0, 0.5))
             + from_tissue("b.data", many("delta_A_early", 1.2, 0.5)))
-    mixed = StubSweep(report, "mixed", [({"beta": 100}, base_runs), ({"beta": 30}, one),
-                                        ({"beta": 50}, both)], kind="fig5")
-    report.BASE["fig5"], saved = {"beta": 100}, report.BASE["fig5"]
-    try:
-        optimal = [x for x in report.optimal_lines([mixed]) if "delta_A_early" in x]
-    finally:
-        report.BASE["fig5"] = saved
-    expect(len(optimal) == 1 and "**does not hold**: resolved lower at beta=30 (1)" in optimal[0]
+    mixed = StubSweep(report, "mixed", [({"beta": 100, "eps_b": 0.4}, base_runs),
+                                        ({"beta": 30, "eps_b": 0.4}, one),
+                                        ({"beta": 50, "eps_b": 0.4}, both)], kind="fig5")
+    optimal = [x for x in report.optimal_lines([mixed]) if "delta_A_early" in x]
+    expect(len(optimal) == 1 and "**does not hold**: resolved lower at beta=30 eps_b=0.4 (1)"
+           in optimal[0]
            and "tissues differ: 1 of the 2 compared points has accepted runs from other "
            "tissues than the base's (a.data and b.data), so its difference carries" in optimal[0]
            and "(2 comparisons), none stays resolved lower once corrected (Holm)" in optimal[0],
            f"near-optimal with a point of one tissue against a base of two: the pooled verdict "
            f"without the note, or the matched family wrong: {optimal}")
-    line = report.claim_line("low beta compacts", mixed, {"beta": 30}, {"beta": 100},
-                             "delta_A_early", -1)
-    expect("**holds**" in line and "Tissues differ: the accepted runs at beta = 30 are from "
-           "a.data, at beta = 100 from a.data and b.data" in line and "on a.data alone: -0.5 "
-           "standard errors, not resolved." in line,
+    line = report.claim_line("low beta compacts", mixed, {"beta": 30, "eps_b": 0.4},
+                             {"beta": 100, "eps_b": 0.4}, "delta_A_early", -1)
+    expect("**holds**" in line and "Tissues differ: the accepted runs at beta = 30, eps_b = 0.4 "
+           "are from a.data, at beta = 100, eps_b = 0.4 from a.data and b.data" in line
+           and "on a.data alone: -0.5 standard errors, not resolved." in line,
            f"a claim between points of different tissues: no note, or not the shared tissue's "
            f"comparison: {line}")
-    line = report.claim_line("low beta compacts", mixed, {"beta": 50}, {"beta": 100},
-                             "delta_A_early", -1)
+    line = report.claim_line("low beta compacts", mixed, {"beta": 50, "eps_b": 0.4},
+                             {"beta": 100, "eps_b": 0.4}, "delta_A_early", -1)
     expect("Tissues differ" not in line,
            f"a claim between points of the same tissues carries the tissue note: {line}")
 

@@ -32,6 +32,7 @@ tissues, step caps); an archive of another plan is refused.
 """
 import argparse
 import csv
+import filecmp
 import json
 import math
 import os
@@ -558,7 +559,7 @@ class Whole:
                      + [a for k in sorted(accept) if k != "ok" for a in ("--accept", k)])
             table, new_table = (os.path.splitext(p)[0] + ".csv" for p in (png, drawn))
             if os.path.exists(png) and os.path.exists(table) and \
-                    open(table).read() == open(new_table).read():
+                    filecmp.cmp(table, new_table, shallow=False):
                 return
             shutil.copy(drawn, png)
             shutil.copy(new_table, table)
