@@ -664,10 +664,15 @@ def claim_line(title, sweep, a_values, b_values, quantity, sign, note=""):
             + (f" {mixed}" if mixed else "") + (f" {note}" if note else ""))
 
 
-def shared_tissues(a, b):
-    """The tissues whose accepted runs both points have."""
+def compare_on_shared(a, b, quantity, sign):
+    """compare() on the tissues whose accepted runs both points have, those alone: (the shared
+    tissues, the verdict, the score, its df); the verdict None where they share no tissue."""
     theirs = set(b.tissues())
-    return [t for t in a.tissues() if t in theirs]
+    shared = [t for t in a.tissues() if t in theirs]
+    if not shared:
+        return shared, None, None, None
+    verdict, *_, score, df = compare(a.on(shared), b.on(shared), quantity, sign)
+    return shared, verdict, score, df
 
 
 def tissue_note(a, b, quantity, sign, a_name, b_name):
@@ -678,12 +683,11 @@ def tissue_note(a, b, quantity, sign, a_name, b_name):
     ta, tb = a.tissues(), b.tissues()
     if ta == tb or len(a.accepted) < 2 or len(b.accepted) < 2:    # same, or nothing compared
         return ""
-    shared = shared_tissues(a, b)
+    shared, verdict, score, _ = compare_on_shared(a, b, quantity, sign)
     head = (f"Tissues differ: the accepted runs at {a_name} are from {listed(ta)}, at {b_name} "
             f"from {listed(tb)}, so the difference carries the tissues' with the seeds'")
     if not shared:
         return head + "; they share no tissue to compare on."
-    verdict, *_, score, _ = compare(a.on(shared), b.on(shared), quantity, sign)
     said = {"holds": "resolved in the stated direction", "opposite": "resolved against it",
             "not resolved": "not resolved", "equal": "no spread to resolve",
             "too few runs": "fewer than two accepted runs"}[verdict]
@@ -867,10 +871,7 @@ def matched_note(compared, base, quantity):
         return ""
     scores, labels = [], []
     for label, e in compared:
-        shared = shared_tissues(e, base)
-        if not shared:
-            continue
-        verdict, *_, score, df = compare(e.on(shared), base.on(shared), quantity, -1)
+        _, verdict, score, df = compare_on_shared(e, base, quantity, -1)
         if verdict in ("holds", "opposite", "not resolved"):
             scores.append((score, df))
             labels.append(label)
